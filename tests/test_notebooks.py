@@ -1,0 +1,62 @@
+"""Every chapter runs with papermill in its quick mode; a broken notebook names itself."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from conftest import ROOT, SHARED_DATA
+
+NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
+
+#: Extra papermill parameters a chapter takes when the shared data is present.
+DATA_PARAMETERS = {
+    "05-how-good-is-the-simple-model": {"data_dir": str(SHARED_DATA / "seed-study")},
+}
+
+
+def test_there_are_notebooks() -> None:
+    assert NOTEBOOKS, "no notebooks found"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_notebook_is_clean(path: Path) -> None:
+    """Stored without outputs and with a papermill ``parameters`` cell holding ``quick``."""
+    notebook = json.loads(path.read_text())
+    cells = notebook["cells"]
+    assert not any(c.get("outputs") for c in cells if c["cell_type"] == "code"), "has outputs"
+    tagged = [c for c in cells if "parameters" in c.get("metadata", {}).get("tags", [])]
+    assert len(tagged) == 1, "needs exactly one cell tagged 'parameters'"
+    assert "quick" in "".join(tagged[0]["source"])
+    assert notebook["metadata"]["kernelspec"]["name"] == "python3"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_notebook_runs_quick(path: Path, tmp_path: Path) -> None:
+    command = [
+        sys.executable,
+        "-m",
+        "papermill",
+        str(path),
+        str(tmp_path / path.name),
+        "-p",
+        "quick",
+        "True",
+        "--cwd",
+        str(path.parent),
+        "-k",
+        "python3",
+        "--execution-timeout",
+        "900",
+    ]
+    for name, value in DATA_PARAMETERS.get(path.stem, {}).items():
+        if SHARED_DATA.is_dir():
+            command += ["-p", name, value]
+    env = dict(os.environ, VBI_QUICK="1", MPLBACKEND="Agg")
+    # papermill occasionally hangs after the last cell: a hard timeout names the notebook
+    result = subprocess.run(command, capture_output=True, text=True, timeout=1200, env=env)
+    assert result.returncode == 0, f"{path.name} failed:\n{result.stderr[-4000:]}"

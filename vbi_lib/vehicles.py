@@ -1,0 +1,111 @@
+r"""The truck as a single sprung mass (study equations 46-47 and 85).
+
+A mass ``m_v`` on a spring ``k_v`` and a viscous damper ``c_v`` whose lower end follows the
+road (profile plus bridge deflection under the wheel).  Its undamped body-bounce frequency is
+:math:`f_v = \sqrt{k_v / m_v} / 2\pi` and its damping ratio
+:math:`\zeta_v = c_v / (2 \sqrt{k_v m_v})`.  Given a frequency, (85) gives
+:math:`k_v = m_v \omega_v^2` and :math:`c_v = 2 \zeta_v m_v \omega_v`; when the frequency
+given is the damped one, :math:`\omega_v = 2\pi f_d / \sqrt{1 - \zeta_v^2}`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from . import _validation as check
+from .units import g
+
+
+@dataclass(frozen=True)
+class Vehicle:
+    """A sprung mass: mass [kg], suspension stiffness [N/m] and damping coefficient [N s/m].
+
+    Examples
+    --------
+    Table 2.13.1's vehicle: 100 slinch on 63165.5 lb/in bounces at 4.00 Hz.
+
+    >>> from vbi_lib import units as u
+    >>> v = Vehicle(100 * u.slinch, 63165.5 * u.lbf / u.inch, 0.0)
+    >>> round(v.frequency_hz, 2)
+    4.0
+    """
+
+    mass: float
+    stiffness: float
+    damping: float = 0.0
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "mass", check.positive("mass", self.mass))
+        object.__setattr__(self, "stiffness", check.positive("stiffness", self.stiffness))
+        object.__setattr__(self, "damping", check.non_negative("damping", self.damping))
+        check.damping_ratio("damping_ratio (from damping)", self.damping_ratio)
+
+    @classmethod
+    def from_frequency(
+        cls,
+        mass: float,
+        frequency_hz: float,
+        damping_ratio: float = 0.1,
+        damped: bool = False,
+    ) -> Vehicle:
+        """A sprung mass with a given body-bounce frequency and damping ratio (85).
+
+        Parameters
+        ----------
+        mass
+            Sprung mass [kg].
+        frequency_hz
+            Body-bounce frequency [Hz]; the undamped one unless ``damped=True``.
+        damping_ratio
+            Fraction of critical damping, in [0, 1).
+        damped
+            ``True`` when ``frequency_hz`` is the damped frequency ``f_d`` (Table 2.13.9).
+
+        Examples
+        --------
+        Table 2.13.9, the 40 ft bridges' truck: 200 slinch, damped 10.5 Hz, 10 %.
+
+        >>> from vbi_lib import units as u
+        >>> v = Vehicle.from_frequency(200 * u.slinch, 10.5, 0.10, damped=True)
+        >>> round(v.stiffness / (u.lbf / u.inch), -1), round(v.damping / (u.lbf / u.inch), 2)
+        (879290.0, 2652.23)
+        """
+        mass = check.positive("mass", mass)
+        frequency = check.positive("frequency_hz", frequency_hz)
+        zeta = check.damping_ratio("damping_ratio", damping_ratio)
+        omega = 2.0 * math.pi * frequency
+        if damped:
+            omega /= math.sqrt(1.0 - zeta**2)
+        return cls(mass, mass * omega**2, 2.0 * zeta * mass * omega)
+
+    @property
+    def circular_frequency(self) -> float:
+        """Undamped ``omega_v = sqrt(k_v / m_v)`` [rad/s]."""
+        return math.sqrt(self.stiffness / self.mass)
+
+    @property
+    def frequency_hz(self) -> float:
+        """Undamped body-bounce frequency [Hz]."""
+        return self.circular_frequency / (2.0 * math.pi)
+
+    @property
+    def damping_ratio(self) -> float:
+        """``c_v / (2 sqrt(k_v m_v))``."""
+        return self.damping / (2.0 * math.sqrt(self.stiffness * self.mass))
+
+    @property
+    def damped_frequency_hz(self) -> float:
+        """Damped frequency ``f_v sqrt(1 - zeta^2)`` [Hz]."""
+        return self.frequency_hz * math.sqrt(1.0 - self.damping_ratio**2)
+
+    @property
+    def weight(self) -> float:
+        """Static weight ``m_v g`` [N]."""
+        return self.mass * g
+
+    def __repr__(self) -> str:
+        return (
+            f"Vehicle(m = {self.mass:.0f} kg, f = {self.frequency_hz:.2f} Hz, "
+            f"zeta = {self.damping_ratio:.1%})"
+        )
