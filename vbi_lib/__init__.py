@@ -9,7 +9,7 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 3.99
 """
 
-from . import amplification, units
+from . import amplification, monitoring, units
 from .bridges import Bridge, shape_function_error
 from .profiles import Profile, max_sample_spacing
 from .simulation import BatchResult, Crossing, simulate, simulate_many, state_matrices
@@ -23,6 +23,7 @@ __all__ = [
     "Vehicle",
     "amplification",
     "max_sample_spacing",
+    "monitoring",
     "shape_function_error",
     "simulate",
     "simulate_many",
