@@ -208,7 +208,7 @@ def _record(name: str, values: object) -> np.ndarray:
     if bad.any():
         index = int(np.flatnonzero(bad)[0])
         raise ValueError(
-            f"{name}[{index}]={array[index]!r} is not a finite number "
+            f"{name}[{index}]={float(array[index])!r} is not a finite number "
             f"({int(bad.sum())} of {array.size} samples are NaN or infinite); "
             "fill or trim the gaps before estimating the DAF"
         )
@@ -284,15 +284,17 @@ def estimate_first_frequency(
     """First natural frequency [Hz] from the free-vibration tail of a record (Welch peak).
 
     The last ``tail_fraction`` of the record (after the vehicle has left) is detrended and its
-    power spectral density estimated with ``scipy.signal.welch`` (one Hann-windowed segment,
-    zero-padded 16 times); the frequency of the largest peak above three frequency bins is
-    returned, refined by a parabola through the peak and its neighbours.
+    power spectral density estimated with ``scipy.signal.welch`` (Hann segments of half the
+    tail, half overlapping, zero-padded 16 times); the frequency of the largest peak above two
+    frequency bins of a segment is returned, refined by a parabola through the peak and its
+    neighbours (on the log power).
 
     Raises
     ------
     ValueError
-        Tail shorter than 64 samples, or no peak that stands ten times above the median
-        power (no free vibration to measure: pass the frequency yourself).
+        Tail shorter than 64 samples, or no peak that stands twenty times above the median
+        power (white noise alone stays below 8; no free vibration to measure: pass the
+        frequency yourself).
 
     Examples
     --------
@@ -314,17 +316,18 @@ def estimate_first_frequency(
             "tail or pass first_frequency_hz"
         )
     tail = _signal.detrend(x[-n_tail:], type="linear")
-    nfft = 16 * n_tail
-    freq, power = _signal.welch(tail, fs=fs, window="hann", nperseg=n_tail, nfft=nfft)
-    floor = 3.0 * fs / n_tail
+    nperseg = n_tail // 2
+    freq, power = _signal.welch(tail, fs=fs, window="hann", nperseg=nperseg, nfft=16 * nperseg)
+    floor = 2.0 * fs / nperseg
     usable = freq > floor
     if not usable.any() or power[usable].max() <= 0:
         raise ValueError("the record's tail holds no vibration to measure; pass first_frequency_hz")
     index = int(np.flatnonzero(usable)[np.argmax(power[usable])])
-    if power[index] < 10.0 * np.median(power[usable]):
+    if power[index] < 20.0 * np.median(power[usable]):
         raise ValueError(
             "no clear natural frequency in the record's free-vibration tail (the largest "
-            "spectral peak is less than ten times the median power); pass first_frequency_hz"
+            "spectral peak is less than twenty times the median power); pass "
+            "first_frequency_hz"
         )
     if 0 < index < freq.size - 1:
         a, b, c = np.log(power[index - 1 : index + 2] + 1e-300)
