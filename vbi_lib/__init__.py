@@ -9,9 +9,18 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 3.99
 """
 
-from . import amplification, monitoring, units
+from . import amplification, monitoring, roughness, units
 from .bridges import Bridge, shape_function_error
-from .profiles import Profile, max_sample_spacing
+from .profiles import (
+    ErdFile,
+    Profile,
+    ProfileFileError,
+    iso8608_class,
+    max_sample_spacing,
+    read_erd,
+    read_profile,
+)
+from .roughness import contact_force_amplification, fit_iso8608, iri, profile_spectrum
 from .simulation import BatchResult, Crossing, simulate, simulate_many, state_matrices
 from .vehicles import Vehicle
 
@@ -19,11 +28,21 @@ __all__ = [
     "BatchResult",
     "Bridge",
     "Crossing",
+    "ErdFile",
     "Profile",
+    "ProfileFileError",
     "Vehicle",
     "amplification",
+    "contact_force_amplification",
+    "fit_iso8608",
+    "iri",
+    "iso8608_class",
     "max_sample_spacing",
     "monitoring",
+    "profile_spectrum",
+    "read_erd",
+    "read_profile",
+    "roughness",
     "shape_function_error",
     "simulate",
     "simulate_many",

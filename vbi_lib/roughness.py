@@ -1,0 +1,555 @@
+r"""Roughness of a road profile: ISO 8608 parameters, the IRI and a vehicle-only metric.
+
+Three ways to put a number on a profile, each weighed in the study's chapter 14 as a
+predictor of dynamic amplification:
+
+**ISO 8608 parameters** (:func:`fit_iso8608`, :func:`profile_spectrum`).  The displacement
+PSD of the road is modelled as :math:`G_d(n) = C_{10} (n / n_0)^{-w}`, :math:`n_0 = 0.1`
+cycle/m (study equation 87).  The one-sided PSD is estimated with Welch's method (Hann
+window, 50 % overlap, each segment detrended with a straight line), averaged over
+1/3-octave bands centred on :math:`0.1 \cdot 2^{k/3}` cycle/m, and a straight line is fitted
+to :math:`\log G_d` against :math:`\log (n / n_0)` (each band weighted by the square root of
+its number of Welch bins), giving :math:`C_{10}` and :math:`w`.
+
+**International Roughness Index** (:func:`iri`).  The golden quarter car (per unit sprung
+mass: tyre :math:`k_1 = 653\ s^{-2}`, suspension :math:`k_2 = 63.3\ s^{-2}`, damper
+:math:`c = 6.0\ s^{-1}`, unsprung mass ratio :math:`\mu = 0.15`) drives at 80 km/h over the
+profile smoothed by a 250 mm moving average.  With states
+:math:`z = (z_s, \dot z_s, z_u, \dot z_u)`
+
+.. math::
+    \dot z = A z + B\, y', \quad
+    A = \begin{pmatrix} 0 & 1 & 0 & 0 \\ -k_2 & -c & k_2 & c \\ 0 & 0 & 0 & 1 \\
+        k_2/\mu & c/\mu & -(k_1 + k_2)/\mu & -c/\mu \end{pmatrix}, \quad
+    B = (0, 0, 0, k_1/\mu)^T
+
+written for slopes (Sayers 1995, TRR 1501; ASTM E1926): the input is the slope of the
+smoothed profile, constant over each sample interval, so one step is exactly
+:math:`z_{i+1} = e^{A \Delta t} z_i + A^{-1}(e^{A \Delta t} - I) B\, y'_i` with
+:math:`\Delta t = \Delta x / V`.  The car starts at steady state on the mean slope of the
+first 11 m; the IRI is the mean of :math:`|z_1 - z_3|` (suspension stroke rate over speed),
+reported in m/km (1 m/km = 63.36 in/mi).
+
+**Contact-force amplification** (:func:`contact_force_amplification`).  The study's
+vehicle-only metric: the truck (a sprung mass) rides the profile on a rigid road, its contact
+force is weighted by a half sine over each span (the span's midspan influence line shape), and
+the peak is divided by the weight.  The sprung mass is driven by a piecewise-linear road, so
+it too is stepped exactly with a matrix exponential.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numba
+import numpy as np
+import scipy.linalg
+import scipy.signal
+
+from . import _validation as check
+from .profiles import ISO_BAND, Profile
+from .vehicles import Vehicle
+
+#: Golden quarter car, per unit sprung mass: k1 [1/s^2], k2 [1/s^2], c [1/s], mu [-].
+GOLDEN_CAR = {"k1": 653.0, "k2": 63.3, "c": 6.0, "mu": 0.15}
+#: IRI reference speed [m/s] (80 km/h).
+IRI_SPEED = 80.0 / 3.6
+#: IRI moving-average base length [m].
+IRI_BASE = 0.25
+#: Length over which the initial slope is taken [m].
+IRI_LEAD = 11.0
+#: in/mi per m/km.
+IN_PER_MI = 63.36
+
+
+# ---------------------------------------------------------------------------- ISO 8608
+class Iso8608Fit(NamedTuple):
+    """``G_d(0.1 cycle/m)`` [m^3] and the waviness ``w`` of a profile."""
+
+    c10: float
+    waviness: float
+
+
+@dataclass(frozen=True, eq=False)
+class ProfileSpectrum:
+    """Welch PSD of a profile, its 1/3-octave band averages and the ISO 8608 line through them.
+
+    Attributes
+    ----------
+    frequency, psd
+        Welch bins [cycle/m] and the one-sided displacement PSD ``G_d`` [m^3].
+    band_frequency, band_psd
+        Centres of the 1/3-octave bands used in the fit [cycle/m] and their mean PSD [m^3].
+    c10, waviness
+        The fitted ``G_d(0.1)`` [m^3] and ``w``.
+    segment_length
+        Length of the Welch segments [m].
+    """
+
+    frequency: np.ndarray
+    psd: np.ndarray
+    band_frequency: np.ndarray
+    band_psd: np.ndarray
+    c10: float
+    waviness: float
+    segment_length: float
+
+    @property
+    def iso_class(self) -> str:
+        """ISO 8608 class of the fitted ``c10``."""
+        from .profiles import iso8608_class
+
+        return iso8608_class(self.c10)
+
+    def fitted(self, frequency: np.ndarray) -> np.ndarray:
+        """The fitted spectrum ``c10 (n / 0.1)^-w`` [m^3] at ``frequency`` [cycle/m]."""
+        return self.c10 * (np.asarray(frequency) / 0.1) ** (-self.waviness)
+
+    def plot(self, ax=None, label: str | None = None):  # noqa: ANN001, ANN201
+        """Log-log plot of the PSD, the band averages and the fitted line."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(6, 4))
+        keep = self.frequency > 0
+        (line,) = ax.loglog(
+            self.frequency[keep], self.psd[keep], lw=0.6, alpha=0.5, label=label or "Welch PSD"
+        )
+        ax.loglog(self.band_frequency, self.band_psd, "o", ms=4, color=line.get_color())
+        ax.loglog(
+            self.band_frequency,
+            self.fitted(self.band_frequency),
+            "--",
+            color=line.get_color(),
+            label=f"fit C10 = {self.c10 * 1e6:.0f}e-6 m$^3$, w = {self.waviness:.2f}",
+        )
+        ax.set_xlabel("spatial frequency n [cycle/m]")
+        ax.set_ylabel("displacement PSD $G_d$ [m$^3$]")
+        ax.legend(loc="best", fontsize="small")
+        return ax
+
+    def __repr__(self) -> str:
+        return (
+            f"ProfileSpectrum(C10 {self.c10 * 1e6:.1f}e-6 m^3, w {self.waviness:.2f}, "
+            f"class {self.iso_class}; {self.band_frequency.size} bands "
+            f"{self.band_frequency[0]:.3g}-{self.band_frequency[-1]:.3g} cycle/m)"
+        )
+
+
+def profile_spectrum(
+    profile: Profile,
+    band: tuple[float, float] = ISO_BAND,
+    segment_length: float | None = None,
+) -> ProfileSpectrum:
+    """Welch PSD of a profile and the ISO 8608 line fitted to its 1/3-octave averages.
+
+    Parameters
+    ----------
+    profile
+        The road; read at its median spacing if the samples are uneven.
+    band
+        Frequencies to fit [cycle/m]; bands below ``4 / segment_length`` (fewer than four
+        cycles per segment) are left out.
+    segment_length
+        Welch segment length [m]; default a quarter of the profile, at most 250 m.
+
+    Examples
+    --------
+    >>> road = Profile.iso8608(2000.0, 0.05, c10=300e-6, waviness=2.0, seed=7)
+    >>> spectrum = profile_spectrum(road)
+    >>> round(spectrum.c10 * 1e6, -1), round(spectrum.waviness, 1), spectrum.iso_class
+    (300.0, 2.0, 'C')
+    """
+    profile = _uniform(profile)
+    spacing = profile.spacing
+    if segment_length is None:
+        segment_length = min(profile.length / 4.0, 250.0)
+    segment_length = check.positive("segment_length", segment_length)
+    low, high = (float(b) for b in band)
+    if not 0 < low < high:
+        raise ValueError(f"band={band!r} must satisfy 0 < low < high (cycle/m)")
+    per_segment = min(profile.x.size, max(8, int(round(segment_length / spacing))))
+    frequency, psd = scipy.signal.welch(
+        profile.elevation,
+        fs=1.0 / spacing,
+        window="hann",
+        nperseg=per_segment,
+        noverlap=per_segment // 2,
+        detrend="linear",
+    )
+    low = max(low, 4.0 / (per_segment * spacing))
+    high = min(high, 0.5 / spacing)
+    k = np.arange(math.ceil(3 * math.log2(low / 0.1)), math.floor(3 * math.log2(high / 0.1)) + 1)
+    centres = 0.1 * 2.0 ** (k / 3.0)
+    band_f, band_g, weight = [], [], []
+    for centre in centres:
+        inside = (frequency >= centre * 2 ** (-1 / 6)) & (frequency < centre * 2 ** (1 / 6))
+        if inside.any() and psd[inside].mean() > 0:
+            band_f.append(centre)
+            band_g.append(psd[inside].mean())
+            weight.append(math.sqrt(inside.sum()))
+    if len(band_f) < 2:
+        raise ValueError(
+            f"profile {profile.name!r} ({profile.length:.1f} m every {spacing * 1e3:.1f} mm) has "
+            f"fewer than two 1/3-octave bands in {band!r} cycle/m with Welch segments of "
+            f"{per_segment * spacing:.1f} m; use a longer profile or a wider band"
+        )
+    band_f, band_g, weight = np.array(band_f), np.array(band_g), np.array(weight)
+    design = np.column_stack((np.ones_like(band_f), np.log10(band_f / 0.1)))
+    solution = np.linalg.lstsq(design * weight[:, None], np.log10(band_g) * weight, rcond=None)[0]
+    return ProfileSpectrum(
+        frequency=frequency,
+        psd=psd,
+        band_frequency=band_f,
+        band_psd=band_g,
+        c10=float(10.0 ** solution[0]),
+        waviness=float(-solution[1]),
+        segment_length=per_segment * spacing,
+    )
+
+
+def fit_iso8608(
+    profile: Profile,
+    band: tuple[float, float] = ISO_BAND,
+    segment_length: float | None = None,
+) -> Iso8608Fit:
+    """ISO 8608 parameters ``(c10, waviness)`` of a profile (see :func:`profile_spectrum`).
+
+    Examples
+    --------
+    >>> road = Profile.iso8608(4000.0, 0.1, c10=600e-6, waviness=3.0, seed=2)
+    >>> c10, w = fit_iso8608(road)
+    >>> bool(abs(c10 / 600e-6 - 1) < 0.05), bool(abs(w - 3.0) < 0.05)
+    (True, True)
+    """
+    spectrum = profile_spectrum(profile, band, segment_length)
+    return Iso8608Fit(spectrum.c10, spectrum.waviness)
+
+
+# ---------------------------------------------------------------------------- IRI
+def golden_car_matrices() -> tuple[np.ndarray, np.ndarray]:
+    """``A`` (4x4) and ``B`` (4,) of the golden quarter car, states ``(zs, zs', zu, zu')``."""
+    k1, k2, c, mu = (GOLDEN_CAR[k] for k in ("k1", "k2", "c", "mu"))
+    a = np.array(
+        [
+            [0.0, 1.0, 0.0, 0.0],
+            [-k2, -c, k2, c],
+            [0.0, 0.0, 0.0, 1.0],
+            [k2 / mu, c / mu, -(k1 + k2) / mu, -c / mu],
+        ]
+    )
+    b = np.array([0.0, 0.0, 0.0, k1 / mu])
+    return a, b
+
+
+@numba.njit(cache=True)
+def _iri_kernel(slope, st, pr, state, stroke):
+    """Step the golden car over ``slope``; ``stroke[i] = |zs - zu|`` after step ``i``."""
+    z0, z1, z2, z3 = state[0], state[1], state[2], state[3]
+    for i in range(slope.size):
+        s = slope[i]
+        n0 = st[0, 0] * z0 + st[0, 1] * z1 + st[0, 2] * z2 + st[0, 3] * z3 + pr[0] * s
+        n1 = st[1, 0] * z0 + st[1, 1] * z1 + st[1, 2] * z2 + st[1, 3] * z3 + pr[1] * s
+        n2 = st[2, 0] * z0 + st[2, 1] * z1 + st[2, 2] * z2 + st[2, 3] * z3 + pr[2] * s
+        n3 = st[3, 0] * z0 + st[3, 1] * z1 + st[3, 2] * z2 + st[3, 3] * z3 + pr[3] * s
+        z0, z1, z2, z3 = n0, n1, n2, n3
+        stroke[i] = abs(z0 - z2)
+
+
+@dataclass(frozen=True, eq=False)
+class IriSegments:
+    """IRI of consecutive segments of a profile [m/km] (the car's state carried across).
+
+    ``start`` and ``stop`` [m] bound each segment (the last may be shorter); ``iri`` [m/km];
+    ``whole`` is the IRI of the whole profile.
+    """
+
+    start: np.ndarray
+    stop: np.ndarray
+    iri: np.ndarray
+    whole: float
+
+    def __len__(self) -> int:
+        return self.iri.size
+
+    def __repr__(self) -> str:
+        shown = ", ".join(f"{v:.2f}" for v in self.iri[:6])
+        more = ", ..." if self.iri.size > 6 else ""
+        return (
+            f"IriSegments({self.iri.size} segments of {self.stop[0] - self.start[0]:g} m: "
+            f"[{shown}{more}] m/km; whole {self.whole:.2f} m/km)"
+        )
+
+
+def iri(profile: Profile, segment_length: float | None = None) -> float | IriSegments:
+    """International Roughness Index of a profile [m/km] (Sayers 1995, ASTM E1926).
+
+    The golden quarter car at 80 km/h over the profile smoothed by a 250 mm moving average,
+    starting in steady state on the mean slope of the first 11 m, stepped exactly (see the
+    module docstring).  Profiles with uneven spacing are read at their median spacing.
+
+    Parameters
+    ----------
+    profile
+        The road (stations and elevations in metres); sample at 250 mm or finer.
+    segment_length
+        ``None`` for one value over the whole profile; otherwise the IRI of each consecutive
+        segment of this length [m] from the first station (one run, the car's state carried
+        from segment to segment; each slope step is assigned to the segment holding the
+        middle of its 250 mm base).
+
+    Returns
+    -------
+    float or IriSegments
+        IRI in m/km (multiply by 63.36 for in/mi).
+
+    Examples
+    --------
+    A 1 mm sine of wavelength 10 m (the steady-state value is 0.503 m/km):
+
+    >>> road = Profile.harmonic(2000.0, 0.025, wavelength=10.0, amplitude=0.001)
+    >>> round(iri(road), 3)
+    0.503
+    >>> iri(road, segment_length=500.0)
+    IriSegments(4 segments of 500 m: [0.50, 0.50, 0.50, 0.50] m/km; whole 0.50 m/km)
+    """
+    profile = _uniform(profile)
+    dx = profile.spacing
+    y = profile.elevation
+    base = max(1, int(round(IRI_BASE / dx)))
+    if y.size <= base:
+        raise ValueError(
+            f"profile {profile.name!r} ({profile.length:.3f} m) is shorter than the IRI's "
+            f"250 mm moving average; give at least {base + 1} samples"
+        )
+    lead = min(int(round(IRI_LEAD / dx)), y.size - 1)
+    initial = (y[lead] - y[0]) / (lead * dx)
+    slope = (y[base:] - y[:-base]) / (base * dx)
+    st, pr = _golden_transition(dx / IRI_SPEED)
+    stroke = np.empty(slope.size)
+    _iri_kernel(slope, st, pr, np.array([initial, 0.0, initial, 0.0]), stroke)
+    whole = float(stroke.mean() * 1000.0)
+    if segment_length is None:
+        return whole
+    segment_length = check.positive("segment_length", segment_length)
+    centre = profile.x[: slope.size] + 0.5 * base * dx
+    count = max(1, math.ceil(profile.length / segment_length - 1e-9))
+    index = np.minimum(((centre - profile.start) // segment_length).astype(np.int64), count - 1)
+    sums = np.bincount(index, weights=stroke, minlength=count)
+    steps = np.bincount(index, minlength=count)
+    values = np.full(count, np.nan)
+    values[steps > 0] = sums[steps > 0] / steps[steps > 0] * 1000.0
+    start = profile.start + segment_length * np.arange(count)
+    stop = np.minimum(start + segment_length, profile.end)
+    return IriSegments(start, stop, values, whole)
+
+
+def _golden_transition(dt: float) -> tuple[np.ndarray, np.ndarray]:
+    """``ST = exp(A dt)`` and ``PR = A^-1 (ST - I) B`` of the golden car."""
+    a, b = golden_car_matrices()
+    st = scipy.linalg.expm(a * dt)
+    pr = np.linalg.solve(a, (st - np.eye(4)) @ b)
+    return st, pr
+
+
+def _uniform(profile: Profile) -> Profile:
+    """The profile itself when evenly sampled, else read every median spacing."""
+    if not isinstance(profile, Profile):
+        raise ValueError(f"profile must be a vbi_lib.Profile, got {type(profile).__name__}")
+    steps = np.diff(profile.x)
+    spacing = float(np.median(steps))
+    if np.abs(steps - spacing).max() <= 1e-6 * spacing:
+        return profile
+    return profile.resampled(spacing)
+
+
+# ---------------------------------------------------------------------------- vehicle only
+@dataclass(frozen=True, eq=False)
+class ContactForceAmplification:
+    """The study's vehicle-only metric for one crossing (chapter 14).
+
+    Attributes
+    ----------
+    amplification
+        Per span, the largest ``R(t) sin(pi xi / L)`` over the vehicle's weight while the
+        vehicle is on that span (``xi`` its distance from the span's start); with
+        ``dynamic_only=True`` the dynamic part ``F = R - W`` is windowed instead.
+    peak_position
+        Station of each span's peak [m].
+    position, time, contact_force
+        Wheel station [m], time from the start [s] and contact force ``R = W + F`` [N] at
+        every profile sample up to the end of the bridge (force just after the station).
+    weight
+        Vehicle weight ``W`` [N].
+    """
+
+    amplification: np.ndarray
+    peak_position: np.ndarray
+    position: np.ndarray
+    time: np.ndarray
+    contact_force: np.ndarray
+    weight: float
+    dynamic_only: bool = False
+
+    @property
+    def peak(self) -> float:
+        """Largest amplification over the spans."""
+        return float(self.amplification.max())
+
+    def __repr__(self) -> str:
+        values = ", ".join(f"{a:.3f}" for a in self.amplification)
+        kind = "dynamic part" if self.dynamic_only else "contact force"
+        return f"ContactForceAmplification(windowed {kind} / weight per span: {values})"
+
+
+def quarter_car_contact_force(
+    profile: Profile, vehicle: Vehicle, speed: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Contact force of a sprung mass riding ``profile`` on a rigid road (decoupled model, 92).
+
+    ``m u'' = F``, ``F = k (Delta - u) + c (Delta' - u')`` with the profile linear between
+    samples, so over each step the input rate is constant and the step is exact:
+    the augmented state ``(u, u', Delta, Delta')`` is advanced with ``exp(M h)``.  The mass
+    starts at rest on the first sample (``u = Delta(x0)``).
+
+    Returns
+    -------
+    time [s], force_after, force_before
+        At every sample: ``F`` [N] with the road rate of the step that starts there
+        (``force_after``, the last sample uses the step that ends there) and with the rate of
+        the step that ends there (``force_before``; the first sample uses the one starting).
+    """
+    speed = check.positive("speed", speed)
+    m, k, c = vehicle.mass, vehicle.stiffness, vehicle.damping
+    x, delta = profile.x, profile.elevation
+    h = np.diff(x) / speed
+    rate = np.diff(delta) / h
+    system = np.array(
+        [
+            [0.0, 1.0, 0.0, 0.0],
+            [-k / m, -c / m, k / m, c / m],
+            [0.0, 0.0, 0.0, 1.0],
+            [0.0, 0.0, 0.0, 0.0],
+        ]
+    )
+    keys = np.round(h / h.max(), 9)
+    unique, which = np.unique(keys, return_inverse=True)
+    transitions = np.stack([scipy.linalg.expm(system * (u * h.max())) for u in unique])
+    u = np.empty(x.size)
+    v = np.empty(x.size)
+    u[0], v[0] = delta[0], 0.0
+    _sdof_kernel(transitions, which.astype(np.int64), delta, rate, u, v)
+    after_rate = np.append(rate, rate[-1])
+    before_rate = np.insert(rate, 0, rate[0])
+    spring = k * (delta - u) - c * v
+    time = np.concatenate(([0.0], np.cumsum(h)))
+    return time, spring + c * after_rate, spring + c * before_rate
+
+
+@numba.njit(cache=True)
+def _sdof_kernel(transitions, which, delta, rate, u, v):
+    for i in range(rate.size):
+        t = transitions[which[i]]
+        a, b, d, r = u[i], v[i], delta[i], rate[i]
+        u[i + 1] = t[0, 0] * a + t[0, 1] * b + t[0, 2] * d + t[0, 3] * r
+        v[i + 1] = t[1, 0] * a + t[1, 1] * b + t[1, 2] * d + t[1, 3] * r
+
+
+def contact_force_amplification(
+    profile: Profile,
+    vehicle: Vehicle,
+    speed: float,
+    bridge_start: float,
+    span: float,
+    n_spans: int = 1,
+    dynamic_only: bool = False,
+) -> ContactForceAmplification:
+    """The study's vehicle-only roughness metric (chapter 14), per span.
+
+    The truck rides the profile on a rigid road from ``profile.x[0]`` (at rest), see
+    :func:`quarter_car_contact_force`.  While it is on span ``j`` its contact force
+    ``R = W + F`` is multiplied by the half sine ``sin(pi xi / span)`` (``xi`` its distance
+    into the span: the shape of the span's midspan influence line); the largest value over the
+    weight ``W`` is that span's amplification.  A smooth road gives 1.  With
+    ``dynamic_only=True`` only ``F`` is windowed (a smooth road gives 0).
+
+    Parameters
+    ----------
+    profile, vehicle
+        The road and the sprung mass.
+    speed
+        Vehicle speed [m/s].
+    bridge_start
+        Station of the first support [m].
+    span
+        Span length [m].
+    n_spans
+        Number of equal spans (any whole number >= 1).
+    dynamic_only
+        Window the dynamic force ``F`` instead of ``R``.
+
+    Examples
+    --------
+    >>> from vbi_lib import units as u
+    >>> truck = Vehicle.from_frequency(200 * u.slinch, 2.8, 0.2)
+    >>> road = Profile.flat(500 * u.ft, 1 * u.inch)
+    >>> contact_force_amplification(road, truck, 720 * u.inch, 320 * u.ft, 100 * u.ft)
+    ContactForceAmplification(windowed contact force / weight per span: 1.000)
+    """
+    speed = check.positive("speed", speed)
+    span = check.positive("span", span)
+    bridge_start = float(bridge_start)
+    if isinstance(n_spans, bool) or int(n_spans) != n_spans or n_spans < 1:
+        raise ValueError(f"n_spans={n_spans!r} must be a whole number >= 1")
+    n_spans = int(n_spans)
+    end = bridge_start + n_spans * span
+    if not (profile.start <= bridge_start and end <= profile.end):
+        raise ValueError(
+            f"the bridge [{bridge_start:g}, {end:g}] m must lie on the profile "
+            f"[{profile.start:g}, {profile.end:g}] m"
+        )
+    supports = bridge_start + span * np.arange(n_spans + 1)
+    midspans = supports[:-1] + 0.5 * span
+    x = np.concatenate((profile.x[profile.x < end], supports, midspans))
+    x = np.unique(x[(x >= profile.start) & (x <= end)])
+    road = Profile(x, profile.elevation_at(x), name=profile.name)
+    time, after, before = quarter_car_contact_force(road, vehicle, speed)
+    weight = vehicle.weight
+    force = np.maximum(after, before)
+    if not dynamic_only:
+        force = force + weight
+    amplification = np.empty(n_spans)
+    where = np.empty(n_spans)
+    for j in range(n_spans):
+        on = (x >= supports[j]) & (x <= supports[j + 1])
+        windowed = force[on] * np.sin(np.pi * (x[on] - supports[j]) / span)
+        best = int(np.argmax(windowed))
+        amplification[j] = windowed[best] / weight
+        where[j] = x[on][best]
+    return ContactForceAmplification(
+        amplification=amplification,
+        peak_position=where,
+        position=x,
+        time=time,
+        contact_force=weight + after,
+        weight=weight,
+        dynamic_only=bool(dynamic_only),
+    )
+
+
+__all__ = [
+    "GOLDEN_CAR",
+    "IN_PER_MI",
+    "ContactForceAmplification",
+    "Iso8608Fit",
+    "IriSegments",
+    "ProfileSpectrum",
+    "contact_force_amplification",
+    "fit_iso8608",
+    "golden_car_matrices",
+    "iri",
+    "profile_spectrum",
+    "quarter_car_contact_force",
+]
