@@ -9,7 +9,7 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 3.99
 """
 
-from . import amplification, monitoring, roughness, units
+from . import amplification, monitoring, roughness, studies, units
 from .bridges import Bridge, shape_function_error
 from .profiles import (
     ErdFile,
@@ -47,6 +47,7 @@ __all__ = [
     "simulate",
     "simulate_many",
     "state_matrices",
+    "studies",
     "units",
 ]
 
