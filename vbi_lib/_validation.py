@@ -61,5 +61,5 @@ def finite_array(name: str, values: object) -> np.ndarray:
     bad = ~np.isfinite(array)
     if bad.any():
         index = int(np.flatnonzero(bad)[0])
-        raise ValueError(f"{name}[{index}]={array[index]!r} is not a finite number")
+        raise ValueError(f"{name}[{index}]={float(array[index])!r} is not a finite number")
     return array

@@ -236,8 +236,11 @@ def _crossing_kernel(
 ):
     """Integrate one crossing with RK4 over the nodes ``x``.
 
+    The contact force at a node is evaluated with the step that starts there (the profile
+    slope, hence the damper force, jumps at every sample).
+
     ``span_of_step[k]`` is 0 off the bridge, else the span (1 or 2) the wheel is on during
-    step k.  ``states`` (n_nodes x 4) and ``contact`` (n_nodes) receive the history when
+    the step from node k to node k + 1 (one entry per node, the last unused).  ``states`` (n_nodes x 4) and ``contact`` (n_nodes) receive the history when
     they have ``n_nodes`` rows; with one row only the summary is kept.  ``peaks`` receives,
     per span, the largest downward midspan deflection while the wheel is on that span, then
     the largest contact force on the bridge and the station where it occurs.
@@ -321,20 +324,19 @@ def _crossing_kernel(
                 peak = max(-sign * za, -sign * z[2])
             if peak > peaks[span - 1]:
                 peaks[span - 1] = peak
-            if not record:
-                _derivative(tmp, z, A1, B1, f1, e_b, rate)
-                force = weight + m_v * tmp[1]
-                if force > peaks[n_spans]:
-                    peaks[n_spans] = force
-                    peaks[n_spans + 1] = xb
+    # the last node starts no step: its force uses the last step's matrices and slope
+    k = n_nodes - 1
+    on = span_of_step[k - 1] > 0
+    psi_b, dpsi_b = _shape(x[k], params, on)
+    _fill_state_matrices(A1, B1, f1, psi_b, dpsi_b, params, coupled, convective)
+    slope = (elevation[k] - elevation[k - 1]) / (x[k] - x[k - 1])
+    _derivative(k1, z, A1, B1, f1, elevation[k], slope * speed)
+    force = weight + m_v * k1[1]
     if record:
-        k = n_nodes - 1
-        on = span_of_step[k - 1] > 0
-        psi_b, dpsi_b = _shape(x[k], params, on)
-        _fill_state_matrices(A1, B1, f1, psi_b, dpsi_b, params, coupled, convective)
-        slope = (elevation[k] - elevation[k - 1]) / (x[k] - x[k - 1])
-        _derivative(k1, z, A1, B1, f1, elevation[k], slope * speed)
-        contact[k] = weight + m_v * k1[1]
+        contact[k] = force
+    elif on and force > peaks[n_spans]:
+        peaks[n_spans] = force
+        peaks[n_spans + 1] = x[k]
 
 
 @numba.njit(cache=True, parallel=True)
@@ -440,9 +442,12 @@ def _grid(
     x = np.append(starts + within * widths, points[-1])
     elevation = np.interp(x, profile.x, profile.elevation)
     middle = 0.5 * (x[:-1] + x[1:]) - bridge_start
-    span_of_step = np.where(
+    # one entry per node (the step that starts there; the last node starts none), so that
+    # batches can slice nodes and steps with the same offsets
+    span_of_step = np.zeros(x.size, dtype=np.int64)
+    span_of_step[:-1] = np.where(
         (middle > 0) & (middle < bridge.length), np.floor(middle / bridge.span) + 1, 0
-    ).astype(np.int64)
+    )
     return _Grid(x, elevation, span_of_step, float((widths.max() if widths.size else 0) / speed))
 
 
@@ -737,3 +742,145 @@ def simulate_many(
         force[i] = peaks[i, bridge.n_spans] / expanded["vehicles"][i].weight
         where[i] = peaks[i, bridge.n_spans + 1]
     return BatchResult(daf, force, where, dts)
+
+
+# ---------------------------------------------------------------------------- references
+def reference_daf(
+    bridge: Bridge,
+    vehicle: Vehicle,
+    profile: Profile,
+    speed: float,
+    bridge_start: float,
+    coupled: bool = True,
+    convective: bool = True,
+    rtol: float = 1e-10,
+) -> np.ndarray:
+    """DAF of each span from ``scipy.integrate.solve_ivp`` (DOP853) at tight tolerance.
+
+    A slow, readable path for checking the compiled kernel: the right-hand side is
+    :func:`state_matrices` with the profile read by linear interpolation, integrated region
+    by region (approach, each span) so that the coefficients never switch inside a call, and
+    sampled every 0.05 ms for the peaks.
+
+    Examples
+    --------
+    >>> import vbi_lib as vbi
+    >>> b = vbi.Bridge(20.0, 1, 5e9, 6000.0, damping_ratio=0.0)
+    >>> t = vbi.Vehicle.from_frequency(1e4, 3.0, 0.1)
+    >>> road = vbi.Profile.flat(30.0, 0.1)
+    >>> d = reference_daf(b, t, road, 15.0, 5.0, coupled=False)
+    >>> bool(abs(d[0] - vbi.simulate(b, t, road, 15.0, 5.0, coupled=False).daf[0]) < 1e-6)
+    True
+    """
+    from scipy.integrate import solve_ivp
+
+    speed, bridge_start = _check_inputs(bridge, vehicle, profile, speed, bridge_start)
+    x0 = profile.start
+    slopes = np.diff(profile.elevation) / np.diff(profile.x)
+
+    def rhs(t: float, z: np.ndarray, on: bool) -> np.ndarray:
+        x = x0 + speed * t
+        if on:
+            k = math.pi / bridge.span
+            psi, dpsi = math.sin(k * (x - bridge_start)), k * math.cos(k * (x - bridge_start))
+        else:
+            psi = dpsi = 0.0
+        A, B, f = state_matrices(bridge, vehicle, speed, psi, dpsi, coupled, convective)
+        i = min(max(int(np.searchsorted(profile.x, x, side="right")) - 1, 0), slopes.size - 1)
+        u = np.array([np.interp(x, profile.x, profile.elevation), slopes[i] * speed])
+        return A @ z + B @ u + f
+
+    boundaries = [x0] + [bridge_start + j * bridge.span for j in range(bridge.n_spans + 1)]
+    z = np.array([profile.elevation[0], 0.0, 0.0, 0.0])
+    static = bridge.static_deflection(vehicle.weight)
+    daf = np.zeros(bridge.n_spans)
+    for region in range(len(boundaries) - 1):
+        t0 = (boundaries[region] - x0) / speed
+        t1 = (boundaries[region + 1] - x0) / speed
+        if t1 <= t0:
+            continue
+        samples = np.linspace(t0, t1, max(2, int((t1 - t0) / 5e-5) + 1))
+        # every profile sample is a kink of the input: step at most one interval at a time
+        sol = solve_ivp(
+            rhs,
+            (t0, t1),
+            z,
+            method="DOP853",
+            t_eval=samples,
+            args=(region > 0,),
+            rtol=rtol,
+            atol=1e-12,
+            max_step=float(np.min(np.diff(profile.x))) / speed,
+        )
+        z = sol.y[:, -1]
+        if region > 0:
+            sign = 1.0 if region == 1 else -1.0
+            daf[region - 1] = float(np.max(-sign * sol.y[2])) / static
+    return daf
+
+
+@numba.njit(cache=True)
+def _euler_kernel(x, elevation, span_of_step, params, n_spans, coupled, convective, peaks):
+    speed = params[_SPEED]
+    A = np.empty((4, 4))
+    B = np.empty((4, 2))
+    f = np.empty(4)
+    rate = np.empty(4)
+    z = np.zeros(4)
+    z[0] = elevation[0]
+    for j in range(n_spans):
+        peaks[j] = -np.inf
+    for k in range(x.shape[0] - 1):
+        h = (x[k + 1] - x[k]) / speed
+        slope = (elevation[k + 1] - elevation[k]) / (x[k + 1] - x[k])
+        span = span_of_step[k]
+        psi, dpsi = _shape(x[k], params, span > 0)
+        _fill_state_matrices(A, B, f, psi, dpsi, params, coupled, convective)
+        _derivative(rate, z, A, B, f, elevation[k], slope * speed)
+        for i in range(4):
+            z[i] += h * rate[i]
+        if span > 0:
+            sign = 1.0 if span == 1 else -1.0
+            peaks[span - 1] = max(peaks[span - 1], -sign * z[2])
+
+
+def study_explicit_euler_daf(
+    bridge: Bridge,
+    vehicle: Vehicle,
+    profile: Profile,
+    speed: float,
+    bridge_start: float,
+    coupled: bool = True,
+    convective: bool = False,
+) -> np.ndarray:
+    """DAF by the study's own scheme: forward Euler at one step per profile sample.
+
+    Kept only to show its error (see the model chapter); use :func:`simulate`.  Forward Euler
+    multiplies the amplitude of an undamped oscillation by ``sqrt(1 + (omega dt)^2)`` every
+    step, so it adds energy and inflates the DAF most on stiff (high-frequency) bridges.
+    ``convective=False`` by default, as in the study's code.
+
+    Examples
+    --------
+    >>> import vbi_lib as vbi
+    >>> b = vbi.Bridge(12.0, 1, 2e9, 5000.0)
+    >>> t = vbi.Vehicle.from_frequency(2e4, 10.0, 0.1)
+    >>> road = vbi.Profile.flat(40.0, 0.025)
+    >>> euler = study_explicit_euler_daf(b, t, road, 18.0, 20.0)
+    >>> bool(euler[0] > vbi.simulate(b, t, road, 18.0, 20.0, convective=False).daf[0])
+    True
+    """
+    speed, bridge_start = _check_inputs(bridge, vehicle, profile, speed, bridge_start)
+    grid = _grid(bridge, profile, speed, bridge_start, np.inf, bridge_start + bridge.length)
+    peaks = np.empty(bridge.n_spans)
+    _euler_kernel(
+        grid.x,
+        grid.elevation,
+        grid.span_of_step,
+        _parameters(bridge, vehicle, speed, bridge_start),
+        bridge.n_spans,
+        bool(coupled),
+        bool(convective),
+        peaks,
+    )
+    return peaks / bridge.static_deflection(vehicle.weight)
