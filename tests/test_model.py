@@ -157,7 +157,7 @@ def test_very_stiff_heavy_bridge_gives_daf_one() -> None:
 
 
 def test_sprung_mass_on_rigid_road_follows_transmissibility() -> None:
-    """Steady state on a long harmonic approach: |u_v / Y| = sqrt(k^2+(c w)^2)/|k - m w^2 + i c w|."""
+    """Steady state on a harmonic road: |u_v / Y| = |k + i c w| / |k - m w^2 + i c w|."""
     vehicle = vbi.Vehicle.from_frequency(1.5e4, 2.5, 0.15)
     wavelength, amplitude, speed = 8.0, 0.004, 15.0
     road = vbi.Profile.harmonic(400.0, 0.02, wavelength, amplitude)

@@ -237,13 +237,13 @@ def _crossing_kernel(
     """Integrate one crossing with RK4 over the nodes ``x``.
 
     The contact force at a node is evaluated with the step that starts there (the profile
-    slope, hence the damper force, jumps at every sample).
-
-    ``span_of_step[k]`` is 0 off the bridge, else the span (1 or 2) the wheel is on during
-    the step from node k to node k + 1 (one entry per node, the last unused).  ``states`` (n_nodes x 4) and ``contact`` (n_nodes) receive the history when
-    they have ``n_nodes`` rows; with one row only the summary is kept.  ``peaks`` receives,
-    per span, the largest downward midspan deflection while the wheel is on that span, then
-    the largest contact force on the bridge and the station where it occurs.
+    slope, hence the damper force, jumps at every sample).  ``span_of_step[k]`` is 0 off the
+    bridge, else the span (1 or 2) the wheel is on from node k to node k + 1 (one entry per
+    node, the last unused).  ``states`` (n_nodes x 4) and ``contact`` (n_nodes) receive the
+    history when they have ``n_nodes`` rows; with one row only the summary is kept.
+    ``peaks`` receives, per span, the largest downward midspan deflection while the wheel is
+    on that span, then the largest contact force on the bridge and the station where it
+    occurs.
     """
     n_nodes = x.shape[0]
     record = states.shape[0] == n_nodes
