@@ -148,7 +148,7 @@ def profile_spectrum(
     Parameters
     ----------
     profile
-        The road; read at its median spacing if the samples are uneven.
+        The road; read at its mean spacing if the samples are uneven.
     band
         Frequencies to fit [cycle/m]; bands below ``4 / segment_length`` (fewer than four
         cycles per segment) are left out.
@@ -288,7 +288,8 @@ def iri(profile: Profile, segment_length: float | None = None) -> float | IriSeg
 
     The golden quarter car at 80 km/h over the profile smoothed by a 250 mm moving average,
     starting in steady state on the mean slope of the first 11 m, stepped exactly (see the
-    module docstring).  Profiles with uneven spacing are read at their median spacing.
+    module docstring).  Profiles with uneven spacing are read at their mean spacing
+    (linear interpolation).
 
     Parameters
     ----------
@@ -355,11 +356,11 @@ def _golden_transition(dt: float) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _uniform(profile: Profile) -> Profile:
-    """The profile itself when evenly sampled, else read every median spacing."""
+    """The profile itself when evenly sampled, else read at its mean spacing."""
     if not isinstance(profile, Profile):
         raise ValueError(f"profile must be a vbi_lib.Profile, got {type(profile).__name__}")
     steps = np.diff(profile.x)
-    spacing = float(np.median(steps))
+    spacing = profile.length / steps.size
     if np.abs(steps - spacing).max() <= 1e-6 * spacing:
         return profile
     return profile.resampled(spacing)
