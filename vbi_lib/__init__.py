@@ -11,6 +11,7 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 
 from . import amplification, monitoring, roughness, studies, units
 from .bridges import Bridge, shape_function_error
+from .modal import ModalCrossing, beam_modes, reference_beam, simulate_modal, simulate_modal_many
 from .profiles import (
     ErdFile,
     Profile,
@@ -28,6 +29,11 @@ __all__ = [
     "BatchResult",
     "Bridge",
     "Crossing",
+    "ModalCrossing",
+    "beam_modes",
+    "reference_beam",
+    "simulate_modal",
+    "simulate_modal_many",
     "ErdFile",
     "Profile",
     "ProfileFileError",
