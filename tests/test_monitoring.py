@@ -192,6 +192,33 @@ def test_several_events_give_a_table() -> None:
     assert list(as_list.columns) == list(table.columns)
 
 
+def test_a_plain_list_is_one_record() -> None:
+    record, truth = _event(ring=0.2)
+    result = mon.daf_from_record(list(record), FS, speed=25.0, span=25.0)
+    assert isinstance(result, mon.RecordDAF)
+    assert result.daf == pytest.approx(truth, rel=0.01)
+
+
+def test_filter_estimate_of_a_simulated_crossing_against_its_crawl_run() -> None:
+    """A long span at moderate speed (v/L = f1/12): the filter DAF is close to the truth."""
+    import vbi_lib as vbi
+    from vbi_lib import units as u
+
+    bridge = vbi.Bridge.from_midspan_stiffness(100 * u.ft, 1, 497527 * u.lbf / u.inch, 3.99)
+    truck = vbi.Vehicle.from_frequency(200 * u.slinch, 4.5, 0.10, damped=True)
+    road = vbi.Profile.iso8608(100.0 + bridge.length + 5, 0.05, iso_class="A", seed=7)
+    flat = vbi.Profile.flat(100.0 + bridge.length + 5, 0.05)
+    crawl = vbi.simulate(bridge, truck, flat.segment(99.0, flat.end), 0.5, 100.0)
+    static = -crawl.midspan_displacement[:, 0].min()
+    run = vbi.simulate(bridge, truck, road, 10.0, 100.0, free_vibration=6.0)
+    _, record = mon.record_from_crossing(run, FS)
+    truth = -record.min() / static
+    assert truth > 1.1  # the bridge does vibrate
+    result = mon.daf_from_record(record, FS, speed=10.0, span=bridge.span)
+    assert result.first_frequency_hz == pytest.approx(bridge.first_frequency_hz, rel=0.01)
+    assert result.daf == pytest.approx(truth, rel=0.02)
+
+
 def test_record_errors_are_clear() -> None:
     record, _ = _event(ring=0.2)
     with_nan = record.copy()

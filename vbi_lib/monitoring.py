@@ -579,7 +579,11 @@ def daf_from_record(
         raise ValueError(f"baseline_fraction={baseline_fraction!r} must be in [0, 0.5)")
     if span is not None:
         span = check.positive("span", span)
-    several = isinstance(signal, list | tuple) or np.ndim(signal) == 2
+    several = np.ndim(signal) == 2 or (
+        isinstance(signal, list | tuple)
+        and len(signal) > 0
+        and all(np.ndim(event) >= 1 for event in signal)
+    )
     events = list(signal) if several else [signal]
     n = len(events)
     if n == 0:
