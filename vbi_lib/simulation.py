@@ -758,9 +758,10 @@ def reference_daf(
     """DAF of each span from ``scipy.integrate.solve_ivp`` (DOP853) at tight tolerance.
 
     A slow, readable path for checking the compiled kernel: the right-hand side is
-    :func:`state_matrices` with the profile read by linear interpolation, integrated region
-    by region (approach, each span) so that the coefficients never switch inside a call, and
-    sampled every 0.05 ms for the peaks.
+    :func:`state_matrices` with the road read by linear interpolation, integrated one profile
+    interval at a time (the road's slope, hence the input, jumps at every sample and the
+    coefficients switch at the supports), and sampled at nine points per interval for the
+    peaks (a sampling error below 2e-5 at 10 Hz and 1 in / 720 in/s intervals).
 
     Examples
     --------
@@ -769,54 +770,45 @@ def reference_daf(
     >>> t = vbi.Vehicle.from_frequency(1e4, 3.0, 0.1)
     >>> road = vbi.Profile.flat(30.0, 0.1)
     >>> d = reference_daf(b, t, road, 15.0, 5.0, coupled=False)
-    >>> bool(abs(d[0] - vbi.simulate(b, t, road, 15.0, 5.0, coupled=False).daf[0]) < 1e-6)
+    >>> bool(abs(d[0] / vbi.simulate(b, t, road, 15.0, 5.0, coupled=False).daf[0] - 1) < 1e-5)
     True
     """
     from scipy.integrate import solve_ivp
 
     speed, bridge_start = _check_inputs(bridge, vehicle, profile, speed, bridge_start)
-    x0 = profile.start
-    slopes = np.diff(profile.elevation) / np.diff(profile.x)
+    grid = _grid(bridge, profile, speed, bridge_start, np.inf, bridge_start + bridge.length)
+    k = math.pi / bridge.span
 
-    def rhs(t: float, z: np.ndarray, on: bool) -> np.ndarray:
+    def rhs(t: float, z: np.ndarray, x0: float, e0: float, slope: float, on: bool) -> np.ndarray:
         x = x0 + speed * t
-        if on:
-            k = math.pi / bridge.span
-            psi, dpsi = math.sin(k * (x - bridge_start)), k * math.cos(k * (x - bridge_start))
-        else:
+        psi, dpsi = (math.sin(k * (x - bridge_start)), k * math.cos(k * (x - bridge_start)))
+        if not on:
             psi = dpsi = 0.0
         A, B, f = state_matrices(bridge, vehicle, speed, psi, dpsi, coupled, convective)
-        i = min(max(int(np.searchsorted(profile.x, x, side="right")) - 1, 0), slopes.size - 1)
-        u = np.array([np.interp(x, profile.x, profile.elevation), slopes[i] * speed])
-        return A @ z + B @ u + f
+        return A @ z + B @ np.array([e0 + slope * (x - x0), slope * speed]) + f
 
-    boundaries = [x0] + [bridge_start + j * bridge.span for j in range(bridge.n_spans + 1)]
-    z = np.array([profile.elevation[0], 0.0, 0.0, 0.0])
-    static = bridge.static_deflection(vehicle.weight)
-    daf = np.zeros(bridge.n_spans)
-    for region in range(len(boundaries) - 1):
-        t0 = (boundaries[region] - x0) / speed
-        t1 = (boundaries[region + 1] - x0) / speed
-        if t1 <= t0:
-            continue
-        samples = np.linspace(t0, t1, max(2, int((t1 - t0) / 5e-5) + 1))
-        # every profile sample is a kink of the input: step at most one interval at a time
+    z = np.array([grid.elevation[0], 0.0, 0.0, 0.0])
+    peaks = np.full(bridge.n_spans, -np.inf)
+    for i in range(grid.x.size - 1):
+        x0, x1 = grid.x[i], grid.x[i + 1]
+        slope = (grid.elevation[i + 1] - grid.elevation[i]) / (x1 - x0)
+        span = int(grid.span_of_step[i])
+        duration = (x1 - x0) / speed
         sol = solve_ivp(
             rhs,
-            (t0, t1),
+            (0.0, duration),
             z,
             method="DOP853",
-            t_eval=samples,
-            args=(region > 0,),
+            t_eval=np.linspace(0.0, duration, 9),
+            args=(x0, grid.elevation[i], slope, span > 0),
             rtol=rtol,
-            atol=1e-12,
-            max_step=float(np.min(np.diff(profile.x))) / speed,
+            atol=1e-14,
         )
         z = sol.y[:, -1]
-        if region > 0:
-            sign = 1.0 if region == 1 else -1.0
-            daf[region - 1] = float(np.max(-sign * sol.y[2])) / static
-    return daf
+        if span > 0:
+            sign = 1.0 if span == 1 else -1.0
+            peaks[span - 1] = max(peaks[span - 1], float(np.max(-sign * sol.y[2])))
+    return peaks / bridge.static_deflection(vehicle.weight)
 
 
 @numba.njit(cache=True)
