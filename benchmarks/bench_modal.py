@@ -1,0 +1,69 @@
+"""Speed of the many-mode model (issue 5: the 239-scenario set with 5 modes in under 3 s).
+
+Run: ``.venv/bin/python benchmarks/bench_modal.py``.  Prints the median of repeated runs after
+a warm-up (numba compiles on first use and caches to disk).
+"""
+
+from __future__ import annotations
+
+import statistics
+import time
+from pathlib import Path
+
+import numpy as np
+
+import vbi_lib as vbi
+from vbi_lib import units as u
+from vbi_lib.modal import assessment_inputs, simulate_modal, simulate_modal_many
+
+DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "seed-study"
+
+
+def median_time(function, repeats: int) -> float:  # noqa: ANN001
+    function()  # warm-up
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        function()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times)
+
+
+def table_2_13_1_crossings() -> None:
+    bridge = vbi.Bridge(100 * u.ft, 2, 7.5e12 * u.lbf * u.inch**2, 4.6 * u.kip / u.ft / u.g)
+    truck = vbi.Vehicle.from_frequency(100 * u.slinch, 4.0, 0.10)
+    road = vbi.Profile.iso8608(650 * u.ft, 1 * u.inch, c10=300e-6, waviness=2.0, seed=1)
+    for modes in (1, 5, 20, 100):
+        seconds = median_time(
+            lambda m=modes: simulate_modal(bridge, truck, road, 720 * u.inch, 320 * u.ft, m), 20
+        )
+        print(f"one crossing, Table 2.13.1 two-span beam, {modes:3d} modes: {seconds * 1e3:.2f} ms")
+
+
+def assessment_set(modes: int) -> tuple[float, int]:
+    import pandas as pd
+
+    table = pd.read_csv(DATA / "scenarios-239.csv")
+    profiles = {}
+    for name in table.profile.unique():
+        data = np.loadtxt(DATA / "profiles" / name, delimiter=",")
+        profiles[name] = vbi.Profile(data[:, 0] * u.inch, (data[:, 1] - data[0, 1]) * u.inch)
+    bridges, trucks, roads = assessment_inputs(table, profiles, beam="exact")
+
+    def run() -> None:
+        simulate_modal_many(bridges, trucks, roads, 720 * u.inch, 3840 * u.inch, modes)
+
+    return median_time(run, 5), len(table)
+
+
+if __name__ == "__main__":
+    import numba
+
+    print(f"numba threads: {numba.get_num_threads()}")
+    table_2_13_1_crossings()
+    if DATA.is_dir():
+        for modes in (1, 5, 15):
+            seconds, n = assessment_set(modes)
+            print(f"{n} crossings of the study's assessment set, {modes:2d} modes: {seconds:.3f} s")
+    else:
+        print(f"no data at {DATA}: assessment-set benchmark skipped")
