@@ -602,7 +602,10 @@ def _set_threads(threads: int | None) -> None:
 
 
 def _init_worker() -> None:
-    """Process-pool initializer: one numba thread per worker process."""
+    """Process-pool initializer: one numba thread per worker; Ctrl-C is the parent's."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     _set_threads(1)
 
 
