@@ -179,6 +179,9 @@ def test_units_by_name_or_factor_and_separate_elevation_unit(tmp_path: Path) -> 
     header = tmp_path / "h.csv"
     header.write_text("distance,elevation\n0,0\n1,1,\n")
     assert vbi.read_profile(header, unit="m", skip_rows=1).x.size == 2
+    bom = tmp_path / "bom.csv"
+    bom.write_bytes(b"\xef\xbb\xbf0,0\r\n1,2\r\n")
+    np.testing.assert_allclose(vbi.read_profile(bom, unit="m").elevation, [0.0, 2.0])
     with pytest.raises(ValueError, match="unit='furlong'"):
         vbi.read_profile(path, unit="furlong")
 

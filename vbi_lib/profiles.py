@@ -555,7 +555,7 @@ def read_profile(
     if int(skip_rows) != skip_rows or skip_rows < 0:
         raise ValueError(f"skip_rows={skip_rows!r} must be a whole number >= 0")
     try:
-        text = path.read_text()
+        text = path.read_text(encoding="utf-8-sig")  # tolerate a byte-order mark
     except OSError as exc:
         raise ProfileFileError(path, None, f"cannot be read ({exc.strerror or exc})") from None
     except UnicodeDecodeError:
@@ -673,7 +673,7 @@ def read_erd(path: str | Path) -> ErdFile:
     """
     path = Path(path)
     try:
-        lines = path.read_text().splitlines()
+        lines = path.read_text(encoding="utf-8-sig").splitlines()
     except OSError as exc:
         raise ProfileFileError(path, None, f"cannot be read ({exc.strerror or exc})") from None
     except UnicodeDecodeError:
