@@ -220,3 +220,21 @@ def test_contact_force_amplification_checks_its_bridge() -> None:
         contact_force_amplification(road, TRUCK, SPEED, 10.0, 30.0, n_spans=0)
     with pytest.raises(ValueError, match="speed"):
         contact_force_amplification(road, TRUCK, -1.0, 10.0, 30.0)
+
+
+@pytest.mark.parametrize("c10", [300e-6, 600e-6])
+@pytest.mark.parametrize("waviness", [2, 3, 4])
+def test_fit_of_the_studys_own_iso_files(shared_data: Path, c10: float, waviness: int) -> None:
+    """The study's files (inches) carry their C10 and w in their names.
+
+    Its generator scaled the amplitudes a little differently from ISO's sqrt(2 G dn) (its
+    fits come out 10-25 % above the nominal C10 and ~0.1 above w, for every file), and a
+    650 ft road scatters ~10 %: the tolerance is loose, but a unit or fitting error would be
+    off by far more.
+    """
+    for draw in (1, 2):
+        name = f"ISO_C10-{c10 * 1e6:.0f}e-06_w-{waviness}_{draw}.csv"
+        road = vbi.read_profile(shared_data / "seed-study" / "profiles" / name, unit="in")
+        fitted_c10, fitted_w = vbi.fit_iso8608(road)
+        assert fitted_c10 == pytest.approx(c10, rel=0.35)
+        assert fitted_w == pytest.approx(waviness, abs=0.25)
