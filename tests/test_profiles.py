@@ -137,6 +137,15 @@ def test_step_rises_over_one_sample() -> None:
     assert road.elevation[-1] == pytest.approx(0.01)
 
 
+def test_shapes_reject_bad_numbers() -> None:
+    with pytest.raises(ValueError, match="height=nan must be a finite number"):
+        vbi.Profile.bump(10.0, 0.1, position=5.0, height=float("nan"), width=1.0)
+    with pytest.raises(ValueError, match="position='x' must be a number"):
+        vbi.Profile.step(10.0, 0.1, position="x", height=0.01)
+    with pytest.raises(ValueError, match="run=0"):
+        vbi.Profile.ramp(10.0, 0.1, position=1.0, rise=0.01, run=0)
+
+
 def test_placing_a_road_on_a_bridge_in_five_foot_steps() -> None:
     """The study's position study: the same road moved along the bridge in 5 ft steps."""
     road = vbi.Profile.iso8608(200 * u.ft, 1 * u.inch, c10=300e-6, seed=3)

@@ -327,9 +327,9 @@ class Profile:
         (0.02, 0.0)
         """
         width = check.positive("width", width)
-        height = float(height)
+        height = _finite("height", height)
         x = _stations(length, spacing, start)
-        u = (x - float(position)) / width + 0.5
+        u = (x - _finite("position", position)) / width + 0.5
         inside = (u > 0.0) & (u < 1.0)
         elevation = np.where(inside, 0.5 * height * (1.0 - np.cos(2.0 * np.pi * u)), 0.0)
         return cls(x, elevation, name=f"bump {height * 1e3:g} mm x {width:g} m")
@@ -354,7 +354,7 @@ class Profile:
         [0.0, 0.005, 0.01, 0.01]
         """
         run = check.positive("run", run)
-        position, rise = float(position), float(rise)
+        position, rise = _finite("position", position), _finite("rise", rise)
         x = _with_stations(_stations(length, spacing, start), (position, position + run))
         elevation = rise * np.clip((x - position) / run, 0.0, 1.0)
         return cls(x, elevation, name=f"ramp {rise * 1e3:g} mm over {run:g} m")
@@ -378,7 +378,7 @@ class Profile:
         >>> float(p.elevation_at(5.0)), float(p.elevation_at(6.0))
         (0.0, 0.01)
         """
-        position, height = float(position), float(height)
+        position, height = _finite("position", position), _finite("height", height)
         x = _with_stations(_stations(length, spacing, start), (position,))
         elevation = np.where(x > position, height, 0.0)
         return cls(x, elevation, name=f"step {height * 1e3:g} mm")
@@ -447,6 +447,17 @@ class Profile:
             f"Profile({label}{self.x.size} samples over {self.length:.2f} m, "
             f"spacing {self.spacing * 1e3:.1f} mm, rms {rms * 1e3:.2f} mm)"
         )
+
+
+def _finite(name: str, value: float) -> float:
+    """``value`` as a finite float (any sign), else ``ValueError`` naming ``name``."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}={value!r} must be a number") from None
+    if not math.isfinite(number):
+        raise ValueError(f"{name}={value!r} must be a finite number")
+    return number
 
 
 def _with_stations(x: np.ndarray, extra: tuple[float, ...]) -> np.ndarray:
