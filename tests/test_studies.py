@@ -178,6 +178,11 @@ def test_same_table_whatever_the_executor_and_chunking() -> None:
     with cf.ProcessPoolExecutor(2, mp_context=context) as pool:
         pooled = studies.run(table, pool, chunk_size=5)
     pd.testing.assert_frame_equal(serial, pooled)
+    try:
+        default = studies.run(table, studies.default_executor(2))
+    finally:
+        studies.shutdown_default_executor()
+    pd.testing.assert_frame_equal(serial, default)
 
 
 def test_dask_cluster_gives_the_serial_table() -> None:

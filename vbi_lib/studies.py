@@ -705,7 +705,10 @@ def default_executor(max_workers: int | None = None) -> cf.ProcessPoolExecutor:
     """
     global _POOL
     workers = max_workers or os.cpu_count() or 1
-    if _POOL is not None and (_POOL._max_workers != workers or _POOL._broken):
+    stale = _POOL is not None and (
+        _POOL._max_workers != workers or _POOL._broken or _POOL._shutdown_thread
+    )
+    if stale:
         _POOL.shutdown(wait=True, cancel_futures=True)
         _POOL = None
     if _POOL is None:
@@ -715,6 +718,14 @@ def default_executor(max_workers: int | None = None) -> cf.ProcessPoolExecutor:
             initializer=_init_worker,
         )
     return _POOL
+
+
+def shutdown_default_executor() -> None:
+    """Stop the worker processes of :func:`default_executor` (the next run starts new ones)."""
+    global _POOL
+    if _POOL is not None:
+        _POOL.shutdown(wait=True, cancel_futures=True)
+        _POOL = None
 
 
 class _Serial(cf.Executor):
