@@ -185,6 +185,13 @@ def test_same_table_whatever_the_executor_and_chunking() -> None:
     pd.testing.assert_frame_equal(serial, default)
 
 
+def test_one_crossing_per_call_gives_the_batched_table(monkeypatch: pytest.MonkeyPatch) -> None:
+    table = small_study()
+    batched = studies.run(table, "serial")
+    monkeypatch.setattr(studies, "_batch_one_mode", lambda: False)
+    pd.testing.assert_frame_equal(batched, studies.run(table, "serial", chunk_size=9))
+
+
 def test_dask_cluster_gives_the_serial_table() -> None:
     distributed = pytest.importorskip("dask.distributed")
     table = small_study()

@@ -328,6 +328,8 @@ def _axis(name: str, values: Any) -> tuple[list[Any], list[str] | None]:
     """Values and labels of one axis (a scalar, a sequence, or a mapping label -> value)."""
     if isinstance(values, Mapping):
         return list(values.values()), [str(k) for k in values]
+    if isinstance(values, pd.Series | pd.Index):
+        return list(values), None
     if isinstance(values, np.ndarray):
         return list(values.ravel()), None
     if isinstance(values, list | tuple | range):
@@ -796,7 +798,9 @@ def run(
         Any :class:`concurrent.futures.Executor` (a ``ProcessPoolExecutor``, or a Dask
         cluster's ``Client(...).get_executor()``), ``"serial"`` for this process, or ``None``:
         this process for small studies (fewer than :data:`SERIAL_BELOW` crossings), else the
-        local process pool :func:`default_executor`.
+        local process pool :func:`default_executor`.  Give a process pool the ``spawn``
+        context (``fork`` after numba's OpenMP threads have run is unsafe); in a script, run
+        the study under ``if __name__ == "__main__":``.
     chunk_size
         Crossings per task; default about four tasks per worker, at most
         :data:`DEFAULT_CHUNK_SIZE`.  Results do not depend on it.
