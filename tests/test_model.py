@@ -319,3 +319,14 @@ def test_bad_crossing_inputs_are_named() -> None:
         vbi.simulate(bridge, vehicle, road.shifted(1.0), 20.0, 0.5)
     with pytest.raises(ValueError, match="crossing 1: the profile"):
         vbi.simulate_many(bridge, vehicle, road, 20.0, [5.0, 15.0])
+
+
+def test_modes_dispatch_to_the_many_mode_model() -> None:
+    bridge, vehicle, road, speed, start = build_case("100ft-4Hz-two-spans")
+    from vbi_lib.modal import simulate_modal
+
+    direct = simulate_modal(bridge, vehicle, road, speed, start, 5)
+    via = vbi.simulate(bridge, vehicle, road, speed, start, modes=5)
+    np.testing.assert_allclose(via.daf, direct.daf, rtol=1e-12)
+    with pytest.raises(ValueError, match="modes=0"):
+        vbi.simulate(bridge, vehicle, road, speed, start, modes=0)

@@ -16,6 +16,7 @@ NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 #: Extra papermill parameters a chapter takes when the shared data is present.
 DATA_PARAMETERS = {
     "04-how-good-is-the-simple-model": {"data_dir": str(SHARED_DATA / "seed-study")},
+    "05-road-profiles-and-roughness": {"data_dir": str(SHARED_DATA)},
 }
 
 

@@ -541,6 +541,7 @@ def simulate(
     convective: bool = True,
     dt: float | None = None,
     free_vibration: float = 0.0,
+    modes: int = 1,
 ) -> Crossing:
     """Simulate one crossing of a sprung-mass truck over a one- or two-span beam.
 
@@ -566,10 +567,16 @@ def simulate(
         profile sample).  The step used is ``Crossing.dt`` and is noted in ``notes``.
     free_vibration
         Seconds to continue after the truck leaves the bridge.
+    modes
+        1 (default) for the study's one-coordinate model; ``N > 1`` for the first ``N``
+        exact beam modes (:func:`vbi_lib.modal.simulate_modal`, Newmark average
+        acceleration), whose result adds ``modal_coordinates``, ``displacement_at`` and
+        ``moment_at``.
 
     Returns
     -------
     Crossing
+        (a :class:`vbi_lib.modal.ModalCrossing` when ``modes > 1``)
 
     Examples
     --------
@@ -581,6 +588,23 @@ def simulate(
     >>> vbi.simulate(bridge, truck, road, 720 * u.inch / u.s, 320 * u.ft).daf.round(2)
     array([1.04])
     """
+    if isinstance(modes, bool) or not isinstance(modes, int | np.integer) or modes < 1:
+        raise ValueError(f"modes={modes!r} must be a whole number >= 1 (1: the study's model)")
+    if modes > 1:
+        from .modal import simulate_modal
+
+        return simulate_modal(
+            bridge,
+            vehicle,
+            profile,
+            speed,
+            bridge_start,
+            int(modes),
+            coupled,
+            convective,
+            dt,
+            free_vibration,
+        )
     speed, bridge_start = _check_inputs(bridge, vehicle, profile, speed, bridge_start)
     free_vibration = check.non_negative("free_vibration", free_vibration)
     notes = []
