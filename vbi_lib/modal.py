@@ -51,9 +51,10 @@ The static midspan deflection under the weight at station :math:`x` is the modal
 :math:`P \sum_n \phi_n(x)\phi_n(x_{mid}) / \omega_n^2`; the model's static deflection is its
 largest value over all load positions (the crawl run of a finite-element study), and the DAF
 of span ``j`` divides the largest downward midspan deflection while the wheel is on span
-``j`` by it.  With many modes it tends to the exact beam values :math:`PL^3/48EI` and
-:math:`23PL^3/1536EI`-plus (the maximum of the two-span influence line lies slightly off
-midspan).
+``j`` by it.  With many modes the deflection under a midspan load tends to the exact
+:math:`PL^3/48EI` (one span) and :math:`23PL^3/1536EI` (two spans); on two spans the largest
+value over load positions is 0.25 % above the latter, because the peak of the midspan
+influence line lies slightly off midspan.
 """
 
 from __future__ import annotations
