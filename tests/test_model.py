@@ -330,3 +330,13 @@ def test_modes_dispatch_to_the_many_mode_model() -> None:
     np.testing.assert_allclose(via.daf, direct.daf, rtol=1e-12)
     with pytest.raises(ValueError, match="modes=0"):
         vbi.simulate(bridge, vehicle, road, speed, start, modes=0)
+
+
+def test_simulate_many_with_modes_matches_simulate() -> None:
+    bridge, vehicle, road, speed, start = build_case("40ft-10Hz-one-span")
+    batch = vbi.simulate_many(bridge, vehicle, road, [speed, 0.9 * speed], start, modes=[1, 3])
+    assert batch.daf[0, 0] == pytest.approx(
+        vbi.simulate(bridge, vehicle, road, speed, start).daf[0], rel=2e-3
+    )
+    three = vbi.simulate(bridge, vehicle, road, 0.9 * speed, start, modes=3)
+    assert batch.daf[1, 0] == pytest.approx(three.daf[0], rel=1e-9)

@@ -685,11 +685,13 @@ def simulate_many(
     coupled: bool | list[bool] = True,
     convective: bool | list[bool] = True,
     dt: float | None = None,
+    modes: int | list[int] | np.ndarray = 1,
 ) -> BatchResult:
     """DAF of many crossings at once, compiled and run in parallel (numba threads).
 
     Every argument is one value or a list; lists must share one length ``n`` and single
-    values are repeated.  Results match :func:`simulate` crossing by crossing.
+    values are repeated.  Results match :func:`simulate` crossing by crossing.  Any
+    ``modes`` above 1 sends the batch to :func:`vbi_lib.modal.simulate_modal_many`.
 
     Examples
     --------
@@ -700,6 +702,12 @@ def simulate_many(
     >>> r.daf.shape
     (2, 2)
     """
+    if np.any(np.asarray(modes) != 1):
+        from .modal import simulate_modal_many
+
+        return simulate_modal_many(
+            bridges, vehicles, profiles, speeds, bridge_starts, modes, coupled, convective, dt
+        )
     args = {
         "bridges": bridges,
         "vehicles": vehicles,
