@@ -37,7 +37,6 @@ import tempfile
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import asdict, dataclass
-from itertools import product
 from pathlib import Path
 from typing import Any
 
@@ -403,15 +402,13 @@ def grid(
         if not values[column]:
             raise ValueError(f"grid(): the axis {column!r} is empty; give at least one value")
     sizes = [len(values[c]) for c in _AXIS_ORDER]
-    index = np.array(list(product(*[range(n) for n in sizes])), dtype=np.int64).reshape(
-        -1, len(sizes)
-    )
+    index = np.stack(np.unravel_index(np.arange(math.prod(sizes)), sizes), axis=1)
     table: dict[str, Any] = {}
     for k, column in enumerate(_AXIS_ORDER):
-        picked = index[:, k]
-        col = np.empty(len(picked), dtype=object)
-        col[:] = [values[column][i] for i in picked]
-        table[column] = col
+        items = np.empty(len(values[column]), dtype=object)
+        for i, value in enumerate(values[column]):
+            items[i] = value
+        table[column] = items[index[:, k]]
     for column in ("bridge", "vehicle", "profile"):
         if labels[column] is not None:
             table[f"{column}_name"] = [
@@ -551,8 +548,10 @@ def validate(scenarios: Any) -> pd.DataFrame:
         ok &= ~bad
     if ok.any():
         rows = np.flatnonzero(ok)
-        lengths = np.array([table["bridge"].iat[i].length for i in rows])
-        extents = np.array([_extent(table["profile"].iat[i]) for i in rows]).reshape(-1, 2)
+        b_code, b_unique = pd.factorize(table["bridge"].iloc[rows])
+        p_code, p_unique = pd.factorize(table["profile"].iloc[rows])
+        lengths = np.array([b.length for b in b_unique])[b_code]
+        extents = np.array([_extent(p) for p in p_unique]).reshape(-1, 2)[p_code]
         road_end = extents[:, 1] - offset[rows]
         end = start[rows] + lengths
         short = (start[rows] < extents[:, 0]) | (end > road_end + 1e-9 * np.maximum(1, abs(end)))
