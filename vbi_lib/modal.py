@@ -70,7 +70,7 @@ from scipy.optimize import brentq, minimize_scalar
 from . import _validation as check
 from .bridges import Bridge
 from .profiles import Profile
-from .simulation import BatchResult
+from .simulation import BatchResult, _check_inputs, _grid
 from .units import g as GRAVITY
 from .vehicles import Vehicle
 
@@ -669,60 +669,10 @@ def _batch_kernel(
 
 
 # ---------------------------------------------------------------------------- preparation
-def _check_inputs(
-    bridge: Bridge, vehicle: Vehicle, profile: Profile, speed: float, bridge_start: float
-) -> tuple[float, float]:
-    if not isinstance(bridge, Bridge):
-        raise TypeError(f"bridge must be a vbi.Bridge, got {type(bridge).__name__}")
-    if not isinstance(vehicle, Vehicle):
-        raise TypeError(f"vehicle must be a vbi.Vehicle, got {type(vehicle).__name__}")
-    if not isinstance(profile, Profile):
-        raise TypeError(f"profile must be a vbi.Profile, got {type(profile).__name__}")
-    speed = check.positive("speed", speed)
-    try:
-        bridge_start = float(bridge_start)
-    except (TypeError, ValueError):
-        raise ValueError(f"bridge_start={bridge_start!r} must be a station in metres") from None
-    if not math.isfinite(bridge_start):
-        raise ValueError(f"bridge_start={bridge_start!r} must be a finite station in metres")
-    end = bridge_start + bridge.length
-    if bridge_start < profile.start or end > profile.end + 1e-9 * max(1.0, abs(end)):
-        raise ValueError(
-            f"the profile (stations {profile.start:g} to {profile.end:g} m) does not cover the "
-            f"approach and the bridge (stations {profile.start:g} to {end:g} m with "
-            f"bridge_start={bridge_start:g} m); extend the profile or move the bridge"
-        )
-    return speed, bridge_start
-
-
 def _check_modes(modes: object) -> int:
     if isinstance(modes, bool) or not isinstance(modes, int | np.integer) or modes < 1:
         raise ValueError(f"modes={modes!r} must be a whole number of modes >= 1")
     return int(modes)
-
-
-def _grid(
-    bridge: Bridge, profile: Profile, speed: float, bridge_start: float, dt: float, stop: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
-    """Nodes: every profile sample before ``stop``, the supports and ``stop``, subdivided."""
-    supports = bridge_start + bridge.span * np.arange(bridge.n_spans + 1)
-    inside = profile.x[(profile.x > profile.start) & (profile.x < stop)]
-    points = np.union1d(np.concatenate(([profile.start], inside, supports)), [stop])
-    points = points[points <= stop]
-    gaps = np.diff(points)
-    points = points[np.concatenate(([True], gaps > 1e-12 * max(1.0, abs(stop))))]
-    gaps = np.diff(points)
-    pieces = np.maximum(1, np.ceil(gaps / (speed * dt) - 1e-9)).astype(np.int64)
-    starts = np.repeat(points[:-1], pieces)
-    widths = np.repeat(gaps / pieces, pieces)
-    within = np.arange(pieces.sum()) - np.repeat(np.cumsum(pieces) - pieces, pieces)
-    x = np.append(starts + within * widths, points[-1])
-    elevation = np.interp(x, profile.x, profile.elevation)
-    middle = 0.5 * (x[:-1] + x[1:]) - bridge_start
-    span_of_step = np.where(
-        (middle > 0) & (middle < bridge.length), np.floor(middle / bridge.span) + 1, 0
-    ).astype(np.int64)
-    return x, elevation, span_of_step, float(widths.max() / speed)
 
 
 def _parameters(vehicle: Vehicle, speed: float, bridge_start: float, span: float) -> np.ndarray:
@@ -917,7 +867,8 @@ def simulate_modal(
     else:
         dt = check.positive("dt", dt)
     stop = bridge_start + bridge.length + speed * free_vibration
-    x, elevation, span_of_step, dt_max = _grid(bridge, profile, speed, bridge_start, dt, stop)
+    grid = _grid(bridge, profile, speed, bridge_start, dt, stop)
+    x, elevation, span_of_step, dt_max = grid.x, grid.elevation, grid.span_of_step, grid.dt_max
     n = x.size
     q = np.empty((n, modes))
     qd = np.empty((n, modes))
@@ -1044,13 +995,13 @@ def simulate_modal_many(
         key = (id(profile), bridge.span, bridge.n_spans, speed, start, step)
         if key not in grids:
             grids[key] = _grid(bridge, profile, speed, start, step, start + bridge.length)
-        x, elevation, span_of_step, dt_max = grids[key]
-        xs.append(x)
-        es.append(elevation)
-        spans.append(np.append(span_of_step, 0))  # one entry per node, like x
-        offsets.append(offsets[-1] + x.size)
+        grid = grids[key]
+        xs.append(grid.x)
+        es.append(grid.elevation)
+        spans.append(grid.span_of_step)  # one entry per node, like x
+        offsets.append(offsets[-1] + grid.x.size)
         params[i] = _parameters(vehicle, speed, start, bridge.span)
-        dts[i] = dt_max
+        dts[i] = grid.dt_max
         phi_mid[i, : bridge.n_spans, :modes] = basis.shape(np.array(bridge.midspans))
         statics[i] = max(_largest_static(bridge, modes)) * vehicle.weight
         kinds.append(basis.kind)
