@@ -192,6 +192,29 @@ def test_one_crossing_per_call_gives_the_batched_table(monkeypatch: pytest.Monke
     pd.testing.assert_frame_equal(batched, studies.run(table, "serial", chunk_size=9))
 
 
+def test_a_recipe_is_built_once_per_process(monkeypatch: pytest.MonkeyPatch) -> None:
+    calls = []
+    original = vbi.Profile.harmonic.__func__
+
+    def counting(cls, *args, **kwargs):  # noqa: ANN001, ANN002, ANN003, ANN202
+        calls.append(args)
+        return original(cls, *args, **kwargs)
+
+    monkeypatch.setattr(vbi.Profile, "harmonic", classmethod(counting))
+    studies._build.cache_clear()
+    road = studies.HarmonicProfile(150.0, 0.05, 9.0, 0.004)
+    table = studies.grid(
+        vbi.Bridge(30.0, 1, 2e10, 8000.0),
+        vbi.Vehicle.from_frequency(3e4, 3.0),
+        road,
+        list(np.linspace(10.0, 30.0, 12)),
+        100.0,
+        profile_offsets=[0.0, 5.0],
+    )
+    studies.run(table, "serial", chunk_size=5)
+    assert len(calls) == 1
+
+
 def test_dask_cluster_gives_the_serial_table() -> None:
     distributed = pytest.importorskip("dask.distributed")
     table = small_study()
