@@ -185,11 +185,11 @@ def test_same_table_whatever_the_executor_and_chunking() -> None:
     pd.testing.assert_frame_equal(serial, default)
 
 
-def test_one_crossing_per_call_gives_the_batched_table(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_chunking_does_not_change_the_table() -> None:
     table = small_study()
-    batched = studies.run(table, "serial")
-    monkeypatch.setattr(studies, "_batch_one_mode", lambda: False)
-    pd.testing.assert_frame_equal(batched, studies.run(table, "serial", chunk_size=9))
+    pd.testing.assert_frame_equal(
+        studies.run(table, "serial"), studies.run(table, "serial", chunk_size=1)
+    )
 
 
 def test_a_recipe_is_built_once_per_process(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -99,26 +99,6 @@ DEFAULT_CHUNK_SIZE = 250
 SERIAL_BELOW = 1500
 
 
-@functools.lru_cache(maxsize=1)
-def _batch_one_mode() -> bool:
-    """May a whole chunk go to one ``simulate_many`` call?
-
-    Not while ``simulate_many`` concatenates per-step span flags (one fewer than the nodes)
-    under node offsets (vbi_lib 0.1.0): that misaligns the flags of every crossing after the
-    first in a batch and lets the last read past the array's end.  Until then, one crossing
-    per call is exact and, in a one-thread worker, as fast (0.79 ms against 0.98 ms).
-    """
-    from . import simulation
-
-    try:
-        nodes = simulation._grid(
-            Bridge(10.0, 1, 1e9, 1e3), Profile.flat(20.0, 1.0), 10.0, 5.0, 0.01, 15.0
-        )
-        return nodes.span_of_step.size == nodes.x.size
-    except Exception:  # noqa: BLE001 - any change of the private helper: stay on the safe path
-        return False
-
-
 # ---------------------------------------------------------------------------- recipes
 @dataclass(frozen=True)
 class FlatProfile:
@@ -665,20 +645,8 @@ def _run_chunk(payload: dict[str, Any]) -> dict[str, np.ndarray]:
         flags = {"coupled": list(coupled[rows]), "convective": list(convective[rows])}
         if many_modes:
             batches = [(rows, _modal_model()(*args, modes=modes[rows], dt=payload["dt"], **flags))]
-        elif _batch_one_mode():
-            batches = [(rows, simulate_many(*args, dt=payload["dt"], **flags))]
         else:
-            batches = [
-                (
-                    rows[k : k + 1],
-                    simulate_many(
-                        *(a[k : k + 1] for a in args),
-                        dt=payload["dt"],
-                        **{key: f[k : k + 1] for key, f in flags.items()},
-                    ),
-                )
-                for k in range(rows.size)
-            ]
+            batches = [(rows, simulate_many(*args, dt=payload["dt"], **flags))]
         for where, result in batches:
             out["daf"][where] = np.asarray(result.daf)[:, :2]
             for name in ("contact_force_amplification", "peak_contact_position", "dt"):
@@ -837,14 +805,13 @@ def run(
     """
     table = validate(scenarios)
     n = len(table)
-    serial_threads = None if _batch_one_mode() else 1  # one crossing per call cannot use more
     if isinstance(executor, str):
         if executor != "serial":
             raise ValueError(f"executor={executor!r}: give an Executor, 'serial' or None")
-        pool, threads = _Serial(), serial_threads
+        pool, threads = _Serial(), None
     elif executor is None:
         if n < SERIAL_BELOW:
-            pool, threads = _Serial(), serial_threads
+            pool, threads = _Serial(), None
         else:
             pool, threads = default_executor(), 1
     elif isinstance(executor, cf.Executor):
