@@ -6,26 +6,15 @@ a warm-up (numba compiles on first use and caches to disk).
 
 from __future__ import annotations
 
-import statistics
-import time
 from pathlib import Path
 
 import numpy as np
+from _timing import median_time
 
 import vbi_lib as vbi
 from vbi_lib import units as u
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "seed-study"
-
-
-def median_time(function, repeats: int) -> float:  # noqa: ANN001
-    function()  # warm-up
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def table_2_13_1_crossing() -> float:

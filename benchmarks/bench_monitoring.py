@@ -9,25 +9,14 @@ events, and a load-test table.
 
 from __future__ import annotations
 
-import statistics
-import time
 import warnings
 
 import numpy as np
+from _timing import median_time
 
 from vbi_lib import monitoring as mon
 
 FS = 200.0
-
-
-def median_time(function, repeats: int) -> float:  # noqa: ANN001
-    function()  # warm-up
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def event(seed: int, duration: float = 1.2, f1: float = 4.0, seconds: float = 10.0) -> np.ndarray:

@@ -70,7 +70,7 @@ from scipy.optimize import brentq, minimize_scalar
 from . import _validation as check
 from .bridges import Bridge
 from .profiles import Profile
-from .simulation import BatchResult, _check_inputs, _grid
+from .simulation import BatchResult, _check_inputs, _CrossingViews, _grid
 from .units import g as GRAVITY
 from .vehicles import Vehicle
 
@@ -689,7 +689,7 @@ def _parameters(vehicle: Vehicle, speed: float, bridge_start: float, span: float
 
 # ---------------------------------------------------------------------------- results
 @dataclass(frozen=True, eq=False)
-class ModalCrossing:
+class ModalCrossing(_CrossingViews):
     """One crossing of the many-mode model (SI, displacements positive up).
 
     Attributes
@@ -742,17 +742,6 @@ class ModalCrossing:
         """Natural frequencies of the N modes [Hz]."""
         return self.modes.frequencies_hz
 
-    @property
-    def on_bridge(self) -> np.ndarray:
-        """True at nodes where the wheel is on the bridge (ends included)."""
-        rel = self.position - self.bridge_start
-        return (rel >= -1e-12) & (rel <= self.bridge.length + 1e-12)
-
-    @property
-    def contact_force_amplification(self) -> float:
-        """Largest contact force while on the bridge over the vehicle's weight."""
-        return float(self.contact_force[self.on_bridge].max() / self.vehicle.weight)
-
     def displacement_at(self, x_from_bridge_start: float | np.ndarray) -> np.ndarray:
         """Deflection history ``sum_n phi_n(x) q_n(t)`` [m] at stations from the bridge start.
 
@@ -771,24 +760,6 @@ class ModalCrossing:
             self.modal_coordinates @ self.modes.curvature(x_from_bridge_start).T
         )
         return values[:, 0] if np.ndim(x_from_bridge_start) == 0 else values
-
-    def plot(self, ax=None, span: int | None = None):  # noqa: ANN001, ANN201
-        """Plot the midspan deflection (in static deflections) against the wheel position."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 3.2))
-        spans = range(self.bridge.n_spans) if span is None else [span - 1]
-        x = self.position - self.bridge_start
-        for j in spans:
-            ax.plot(
-                x, self.midspan_displacement[:, j] / self.static_deflection, label=f"span {j + 1}"
-            )
-        ax.axvspan(0, self.bridge.length, color="0.92", zorder=0)
-        ax.set_xlabel("wheel position from the start of the bridge [m]")
-        ax.set_ylabel("midspan displacement / static deflection [-]")
-        ax.legend(loc="best")
-        return ax
 
     def __repr__(self) -> str:
         spans = "1 span" if self.bridge.n_spans == 1 else "2 spans"

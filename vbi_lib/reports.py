@@ -71,31 +71,20 @@ class ReportInputs:
         return tuple(round(s / u.mph, 6) for s in self.speeds)
 
 
-def _mass_per_length(text: str) -> float:
-    """A mass per length, or a weight per length (``"4.6 kip/ft"``) divided by g."""
-    try:
-        return u.parse(text, "mass_per_length", name="mass_per_length")
-    except ValueError:
+def _mass_or_weight(text: str, name: str, per_length: bool) -> float:
+    """A mass (``"200 slinch"``, ``"0.99 slinch/inch"``) or a weight (``"77.2 kip"``,
+    ``"4.6 kip/ft"``) divided by g, in kg or kg/m."""
+    mass_kind, force_kind = (
+        ("mass_per_length", "force_per_length") if per_length else ("mass", "force")
+    )
+    for kind, factor in ((mass_kind, 1.0), (force_kind, 1.0 / u.g)):
         try:
-            return u.parse(text, "force_per_length", name="mass_per_length") / u.g
+            return u.parse(text, kind, name=name) * factor
         except ValueError:
-            raise ValueError(
-                f"mass_per_length={text!r} must be a mass or a weight per length "
-                "(e.g. '0.99 slinch/inch' or '4.6 kip/ft')"
-            ) from None
-
-
-def _vehicle_mass(text: str) -> float:
-    """A mass (``"200 slinch"``) or a weight (``"77.2 kip"``) divided by g."""
-    try:
-        return u.parse(text, "mass", name="vehicle_mass")
-    except ValueError:
-        try:
-            return u.parse(text, "force", name="vehicle_mass") / u.g
-        except ValueError:
-            raise ValueError(
-                f"vehicle_mass={text!r} must be a mass or a weight (e.g. '200 slinch', '77.2 kip')"
-            ) from None
+            continue
+    examples = "'0.99 slinch/inch' or '4.6 kip/ft'" if per_length else "'200 slinch' or '77.2 kip'"
+    what = "a mass or a weight per length" if per_length else "a mass or a weight"
+    raise ValueError(f"{name}={text!r} must be {what} (e.g. {examples})")
 
 
 def read_inputs(**parameters: Any) -> ReportInputs:
@@ -135,14 +124,14 @@ def read_inputs(**parameters: Any) -> ReportInputs:
             span,
             n_spans,
             u.parse(p["EI"], "flexural_rigidity", name="EI"),
-            _mass_per_length(p["mass_per_length"]),
+            _mass_or_weight(p["mass_per_length"], "mass_per_length", per_length=True),
             damping,
         )
     elif {"mass_per_length", "first_frequency"} <= given:
         bridge = Bridge.from_frequency(
             span,
             n_spans,
-            _mass_per_length(p["mass_per_length"]),
+            _mass_or_weight(p["mass_per_length"], "mass_per_length", per_length=True),
             u.parse(p["first_frequency"], "frequency", name="first_frequency"),
             damping,
         )
@@ -152,7 +141,7 @@ def read_inputs(**parameters: Any) -> ReportInputs:
             f"mass_per_length and first_frequency; got {sorted(given) or 'none of them'}"
         )
     vehicle = Vehicle.from_frequency(
-        _vehicle_mass(p["vehicle_mass"]),
+        _mass_or_weight(p["vehicle_mass"], "vehicle_mass", per_length=False),
         u.parse(p["vehicle_frequency"], "frequency", name="vehicle_frequency"),
         float(p["vehicle_damping"]),
     )

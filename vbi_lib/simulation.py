@@ -452,8 +452,49 @@ def _grid(
 
 
 # ---------------------------------------------------------------------------- results
+class _CrossingViews:
+    """What every crossing result offers from its histories (one- and many-mode models)."""
+
+    bridge: Bridge
+    vehicle: Vehicle
+    bridge_start: float
+    position: np.ndarray
+    contact_force: np.ndarray
+    midspan_displacement: np.ndarray
+    static_deflection: float
+
+    @property
+    def on_bridge(self) -> np.ndarray:
+        """True at nodes where the wheel is on the bridge (ends included)."""
+        rel = self.position - self.bridge_start
+        return (rel >= -1e-12) & (rel <= self.bridge.length + 1e-12)
+
+    @property
+    def contact_force_amplification(self) -> float:
+        """Largest contact force while on the bridge over the vehicle's weight."""
+        return float(self.contact_force[self.on_bridge].max() / self.vehicle.weight)
+
+    def plot(self, ax=None, span: int | None = None):  # noqa: ANN001, ANN201
+        """Plot the midspan deflection (in static deflections) against the wheel position."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(7, 3.2))
+        spans = range(self.bridge.n_spans) if span is None else [span - 1]
+        x = self.position - self.bridge_start
+        for j in spans:
+            ax.plot(
+                x, self.midspan_displacement[:, j] / self.static_deflection, label=f"span {j + 1}"
+            )
+        ax.axvspan(0, self.bridge.length, color="0.92", zorder=0)
+        ax.set_xlabel("wheel position from the start of the bridge [m]")
+        ax.set_ylabel("midspan displacement / static deflection [-]")
+        ax.legend(loc="best")
+        return ax
+
+
 @dataclass(frozen=True, eq=False)
-class Crossing:
+class Crossing(_CrossingViews):
     """One crossing: time histories (SI, displacements positive up) and the DAF of each span.
 
     Attributes
@@ -494,35 +535,6 @@ class Crossing:
     coupled: bool = True
     convective: bool = True
     notes: tuple[str, ...] = field(default=())
-
-    @property
-    def on_bridge(self) -> np.ndarray:
-        """True at nodes where the wheel is on the bridge (ends included)."""
-        rel = self.position - self.bridge_start
-        return (rel >= -1e-12) & (rel <= self.bridge.length + 1e-12)
-
-    @property
-    def contact_force_amplification(self) -> float:
-        """Largest contact force while on the bridge over the vehicle's weight."""
-        return float(self.contact_force[self.on_bridge].max() / self.vehicle.weight)
-
-    def plot(self, ax=None, span: int | None = None):  # noqa: ANN001, ANN201
-        """Plot the midspan deflection (in static deflections) against the wheel position."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 3.2))
-        spans = range(self.bridge.n_spans) if span is None else [span - 1]
-        x = self.position - self.bridge_start
-        for j in spans:
-            ax.plot(
-                x, self.midspan_displacement[:, j] / self.static_deflection, label=f"span {j + 1}"
-            )
-        ax.axvspan(0, self.bridge.length, color="0.92", zorder=0)
-        ax.set_xlabel("wheel position from the start of the bridge [m]")
-        ax.set_ylabel("midspan displacement / static deflection [-]")
-        ax.legend(loc="best")
-        return ax
 
     def __repr__(self) -> str:
         spans = "1 span" if self.bridge.n_spans == 1 else "2 spans"
