@@ -70,7 +70,7 @@ from scipy.optimize import brentq, minimize_scalar
 from . import _validation as check
 from .bridges import Bridge
 from .profiles import Profile
-from .simulation import BatchResult, _check_inputs, _CrossingViews, _grid
+from .simulation import BatchResult, _broadcast, _check_inputs, _CrossingViews, _grid
 from .units import g as GRAVITY
 from .vehicles import Vehicle
 
@@ -930,16 +930,7 @@ def simulate_modal_many(
         "convective": convective,
         "modes": modes,
     }
-    lengths = {k: len(v) for k, v in args.items() if isinstance(v, list | tuple | np.ndarray)}
-    if len(set(lengths.values())) > 1:
-        raise ValueError(f"list arguments must have one length; got {lengths}")
-    n = next(iter(lengths.values())) if lengths else 1
-    if n == 0:
-        raise ValueError("simulate_modal_many needs at least one crossing; got empty lists")
-    expanded = {
-        k: (list(v) if isinstance(v, list | tuple | np.ndarray) else [v] * n)
-        for k, v in args.items()
-    }
+    n, expanded = _broadcast(args, "simulate_modal_many")
     if dt is not None:
         dt = check.positive("dt", dt)
     counts = [_check_modes(m) for m in expanded["modes"]]

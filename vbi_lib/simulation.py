@@ -688,6 +688,21 @@ class BatchResult:
     dt: np.ndarray
 
 
+def _broadcast(args: dict, caller: str) -> tuple[int, dict[str, list]]:
+    """Repeat single values to the common length of the list arguments (batch functions)."""
+    lengths = {k: len(v) for k, v in args.items() if isinstance(v, list | tuple | np.ndarray)}
+    if len(set(lengths.values())) > 1:
+        raise ValueError(f"list arguments must have one length; got {lengths}")
+    n = next(iter(lengths.values())) if lengths else 1
+    if n == 0:
+        raise ValueError(f"{caller} needs at least one crossing; got empty lists")
+    expanded = {
+        k: (list(v) if isinstance(v, list | tuple | np.ndarray) else [v] * n)
+        for k, v in args.items()
+    }
+    return n, expanded
+
+
 def simulate_many(
     bridges: Bridge | list[Bridge],
     vehicles: Vehicle | list[Vehicle],
@@ -729,16 +744,7 @@ def simulate_many(
         "coupled": coupled,
         "convective": convective,
     }
-    lengths = {k: len(v) for k, v in args.items() if isinstance(v, list | tuple | np.ndarray)}
-    if len(set(lengths.values())) > 1:
-        raise ValueError(f"list arguments must have one length; got {lengths}")
-    n = next(iter(lengths.values())) if lengths else 1
-    if n == 0:
-        raise ValueError("simulate_many needs at least one crossing; got empty lists")
-    expanded = {
-        k: (list(v) if isinstance(v, list | tuple | np.ndarray) else [v] * n)
-        for k, v in args.items()
-    }
+    n, expanded = _broadcast(args, "simulate_many")
     xs, es, spans, offsets = [], [], [], [0]
     params = np.empty((n, _N_PARAMS))
     dts = np.empty(n)
