@@ -340,3 +340,41 @@ def test_simulate_many_with_modes_matches_simulate() -> None:
     )
     three = vbi.simulate(bridge, vehicle, road, 0.9 * speed, start, modes=3)
     assert batch.daf[1, 0] == pytest.approx(three.daf[0], rel=1e-9)
+
+
+@pytest.mark.parametrize("convective", [True, False])
+def test_energy_bookkeeping_without_damping(convective: bool) -> None:
+    """With no damping, the system's energy changes only by the power of the moving load.
+
+    From the equations of motion on a flat road (c_v = c* = 0, r = psi z_b):
+    dE/dt = F v psi' z_b - m_v g psi dz_b/dt, E = 1/2 m_v u'^2 + 1/2 k_v (r - u)^2
+    + 1/2 m* z'^2 + 1/2 k* z^2.  The convective term only enters through the damper, so
+    without damping both settings must satisfy the same balance.
+    """
+    bridge = vbi.Bridge(25.0, 1, 6e9, 5000.0, damping_ratio=0.0)
+    vehicle = vbi.Vehicle.from_frequency(3e4, 2.2, 0.0)
+    run = vbi.simulate(
+        bridge, vehicle, vbi.Profile.flat(40.0, 0.01), 22.0, 10.0, convective=convective
+    )
+    on = run.on_bridge
+    x = run.position[on] - run.bridge_start
+    k = np.pi / bridge.span
+    psi, dpsi = np.sin(k * x), k * np.cos(k * x)
+    z, zd = run.bridge_coordinate[on], run.bridge_velocity[on]
+    u_v, ud = run.vehicle_displacement[on], run.vehicle_velocity[on]
+    force = run.contact_force[on] - vehicle.weight
+    # the suspension force follows from the states; check it, then use the states alone
+    np.testing.assert_allclose(
+        force, vehicle.stiffness * (psi * z - u_v), atol=1e-6 * vehicle.weight
+    )
+    energy = (
+        0.5 * vehicle.mass * ud**2
+        + 0.5 * vehicle.stiffness * (psi * z - u_v) ** 2
+        + 0.5 * bridge.generalized_mass * zd**2
+        + 0.5 * bridge.generalized_stiffness * z**2
+    )
+    power = force * run.speed * dpsi * z - vehicle.mass * u.g * psi * zd
+    t = run.time[on]
+    work = np.concatenate(([0.0], np.cumsum(0.5 * (power[1:] + power[:-1]) * np.diff(t))))
+    scale = vehicle.weight * bridge.static_deflection(vehicle.weight)
+    np.testing.assert_allclose(energy - energy[0], work, atol=2e-4 * scale)
