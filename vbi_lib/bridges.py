@@ -112,9 +112,7 @@ class Bridge:
         k_mid = check.positive("k_mid", k_mid)
         frequency = check.positive("first_frequency_hz", first_frequency_hz)
         EI = k_mid * span**3 / (48.0 if n_spans == 1 else math.pi**4)
-        omega = 2.0 * math.pi * frequency
-        mass_per_span = math.pi**4 * EI / (omega**2 * span**3)
-        return cls(span, n_spans, EI, mass_per_span / span, damping_ratio)
+        return cls(span, n_spans, EI, mass_per_length_for(EI, span, frequency), damping_ratio)
 
     @classmethod
     def from_frequency(
@@ -213,6 +211,18 @@ class Bridge:
             f"EI = {self.EI:.3e} N m^2, mbar = {self.mass_per_length:.0f} kg/m, "
             f"zeta = {self.damping_ratio:.1%})"
         )
+
+
+def mass_per_length_for(EI: float, span: float, first_frequency_hz: float) -> float:
+    """Mass per length [kg/m] that gives a beam of ``EI`` the first frequency (84).
+
+    ``mbar = pi^4 EI / ((2 pi f_1)^2 L^4)``: the mass per span of (84) divided by ``L``.
+
+    >>> round(mass_per_length_for(1e10, 20.0, 5.0), 3)
+    6168.503
+    """
+    omega = 2.0 * math.pi * first_frequency_hz
+    return math.pi**4 * EI / (omega**2 * span**4)
 
 
 def shape_function_error(n_spans: int) -> float:

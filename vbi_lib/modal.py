@@ -68,7 +68,7 @@ import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from . import _validation as check
-from .bridges import Bridge
+from .bridges import Bridge, mass_per_length_for
 from .profiles import Profile
 from .simulation import BatchResult, _broadcast, _check_inputs, _CrossingViews, _grid
 from .units import g as GRAVITY
@@ -353,9 +353,9 @@ def reference_beam(
     span = check.positive("span", span)
     n_spans = check.n_spans(n_spans)
     k_mid = check.positive("k_mid", k_mid)
-    omega = 2.0 * math.pi * check.positive("first_frequency_hz", first_frequency_hz)
+    frequency = check.positive("first_frequency_hz", first_frequency_hz)
     EI = k_mid * span**3 * (1.0 / 48.0 if n_spans == 1 else 23.0 / 1536.0)
-    return Bridge(span, n_spans, EI, math.pi**4 * EI / (omega**2 * span**4), damping_ratio)
+    return Bridge(span, n_spans, EI, mass_per_length_for(EI, span, frequency), damping_ratio)
 
 
 def static_deflection_line(
