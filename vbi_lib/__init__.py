@@ -1,6 +1,7 @@
 """vbi_lib: dynamic amplification of bridges under a moving truck.
 
-The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` converts.
+The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` converts and
+:mod:`vbi_lib.display` chooses how results are shown.
 
 >>> import vbi_lib as vbi
 >>> from vbi_lib import units as u
@@ -9,9 +10,19 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 3.99
 """
 
-from . import amplification, monitoring, roughness, studies, units
-from .bridges import Bridge, shape_function_error
-from .modal import ModalCrossing, beam_modes, reference_beam, simulate_modal, simulate_modal_many
+from . import amplification, display, models, monitoring, roughness, studies, units
+from .beam_modes import BeamModes, beam_modes
+from .bridges import Bridge, reference_beam, shape_function_error
+from .models import (
+    MODELS,
+    BatchResult,
+    Crossing,
+    ModalCrossing,
+    OneCoordinateCrossing,
+    simulate,
+    simulate_many,
+    state_matrices,
+)
 from .profiles import (
     ErdFile,
     Profile,
@@ -22,32 +33,37 @@ from .profiles import (
     read_profile,
 )
 from .roughness import contact_force_amplification, fit_iso8608, iri, profile_spectrum
-from .simulation import BatchResult, Crossing, simulate, simulate_many, state_matrices
+from .validity import ContactLossWarning, VbiWarning
 from .vehicles import Vehicle
 
 __all__ = [
+    "MODELS",
     "BatchResult",
+    "BeamModes",
     "Bridge",
+    "ContactLossWarning",
     "Crossing",
-    "ModalCrossing",
-    "beam_modes",
-    "reference_beam",
-    "simulate_modal",
-    "simulate_modal_many",
     "ErdFile",
+    "ModalCrossing",
+    "OneCoordinateCrossing",
     "Profile",
     "ProfileFileError",
+    "VbiWarning",
     "Vehicle",
     "amplification",
+    "beam_modes",
     "contact_force_amplification",
+    "display",
     "fit_iso8608",
     "iri",
     "iso8608_class",
     "max_sample_spacing",
+    "models",
     "monitoring",
     "profile_spectrum",
     "read_erd",
     "read_profile",
+    "reference_beam",
     "roughness",
     "shape_function_error",
     "simulate",
@@ -57,4 +73,4 @@ __all__ = [
     "units",
 ]
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"

@@ -3,44 +3,43 @@
 from __future__ import annotations
 
 import math
+import numbers
 
 import numpy as np
 
 
+def number(name: str, value: object) -> float:
+    """``value`` as a float if it is a real number (not text, not a bool), else ``TypeError``."""
+    if isinstance(value, bool | np.bool_) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name}={value!r} must be a number, not {type(value).__name__}")
+    return float(value)
+
+
 def positive(name: str, value: float) -> float:
     """Return ``value`` as a float if it is finite and > 0, else raise ``ValueError``."""
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name}={value!r} must be a positive number") from None
-    if not math.isfinite(number) or number <= 0:
+    number_ = number(name, value)
+    if not math.isfinite(number_) or number_ <= 0:
         raise ValueError(f"{name}={value!r} must be a finite number greater than zero")
-    return number
+    return number_
 
 
 def non_negative(name: str, value: float) -> float:
     """Return ``value`` as a float if it is finite and >= 0, else raise ``ValueError``."""
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name}={value!r} must be a number >= 0") from None
-    if not math.isfinite(number) or number < 0:
+    number_ = number(name, value)
+    if not math.isfinite(number_) or number_ < 0:
         raise ValueError(f"{name}={value!r} must be a finite number >= 0")
-    return number
+    return number_
 
 
 def damping_ratio(name: str, value: float) -> float:
     """A damping ratio in [0, 1)."""
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name}={value!r} must be a number in [0, 1)") from None
-    if not (math.isfinite(number) and 0.0 <= number < 1.0):
+    number_ = number(name, value)
+    if not (math.isfinite(number_) and 0.0 <= number_ < 1.0):
         raise ValueError(
             f"{name}={value!r} is outside [0, 1): give the fraction of critical damping "
             "(0.01 for 1 %)"
         )
-    return number
+    return number_
 
 
 def n_spans(value: int) -> int:
@@ -63,3 +62,10 @@ def finite_array(name: str, values: object) -> np.ndarray:
         index = int(np.flatnonzero(bad)[0])
         raise ValueError(f"{name}[{index}]={float(array[index])!r} is not a finite number")
     return array
+
+
+def flag(name: str, value: object) -> bool:
+    """A boolean switch: ``True`` or ``False`` only (text such as ``'False'`` is refused)."""
+    if isinstance(value, bool | np.bool_):
+        return bool(value)
+    raise TypeError(f"{name}={value!r} must be True or False (a bool, not {type(value).__name__})")

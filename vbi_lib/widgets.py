@@ -23,8 +23,8 @@ import numpy as np
 from . import amplification
 from . import units as u
 from .bridges import Bridge
+from .models import Crossing, simulate, simulate_many
 from .profiles import Profile
-from .simulation import Crossing, simulate, simulate_many
 from .vehicles import Vehicle
 
 _ISO_CLASSES = ["A", "B", "C", "D", "E"]

@@ -1,0 +1,302 @@
+r"""The frame every crossing model shares (the part of :func:`vbi_lib.simulate` that never changes).
+
+A crossing model, like a method of ``scipy.integrate.solve_ivp``, supplies only what differs
+from one model to the next: its compiled kernel, the default time step it needs and the
+static deflection its DAF divides by.  Everything else is here, written once:
+
+* the checks of a crossing's inputs (:func:`check_crossing`);
+* the node grid (:func:`node_grid`): every profile sample, the bridge ends and the interior
+  supports are nodes, so the road is a straight line within a step and the coefficients
+  switch only at nodes; gaps longer than ``speed * dt`` are subdivided evenly;
+* broadcasting of the batch arguments (:func:`broadcast`);
+* the refinement of the midspan peaks inside a step (:func:`downward_peak`, from the cubic
+  Hermite interpolant of the displacement and its rate at the step's ends);
+* the bookkeeping of the contact force on the bridge (:func:`track_contact`): its largest and
+  smallest values and the time the tyre would spend in tension, the check of the study's
+  assumption that the tyre never leaves the road.
+
+Every kernel fills one *summary* vector per crossing with the layout of the ``S_*``
+constants below, so the driver turns any model's output into a result the same way.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+import numba
+import numpy as np
+
+from .. import _validation as check
+from ..bridges import Bridge
+from ..profiles import Profile
+from ..units import g as GRAVITY
+from ..vehicles import Vehicle
+
+#: ``omega * dt`` of the default time step.
+DEFAULT_OMEGA_DT = 0.1
+
+# parameter vector every kernel reads first (a model may append its own entries after P_COUNT)
+P_MASS, P_STIFFNESS, P_DAMPING, P_GRAVITY, P_SPEED, P_START, P_SPAN = range(7)
+P_COUNT = 7
+
+# summary vector of one crossing, filled by every kernel
+S_PEAK = 0  #: largest downward midspan deflection of span 1 (S_PEAK + 1: span 2) [m]
+S_MAX_FORCE = 2  #: largest contact force on the bridge [N]
+S_MAX_AT = 3  #: station where it occurs [m]
+S_MIN_FORCE = 4  #: smallest contact force on the bridge [N]
+S_TENSION_TIME = 5  #: time on the bridge with the contact force below zero [s]
+S_BRIDGE_TIME = 6  #: time on the bridge [s]
+SUMMARY_SIZE = 7
+
+
+# ---------------------------------------------------------------------------- inputs
+def check_crossing(
+    bridge: Bridge, vehicle: Vehicle, profile: Profile, speed: float, bridge_start: float
+) -> tuple[float, float]:
+    """Check the five inputs every crossing has; return ``speed`` and ``bridge_start`` as floats.
+
+    Raises
+    ------
+    TypeError
+        ``bridge``, ``vehicle`` or ``profile`` is not a :class:`~vbi_lib.Bridge`,
+        :class:`~vbi_lib.Vehicle` or :class:`~vbi_lib.Profile`.
+    ValueError
+        A speed that is not a positive number, a station that is not finite, or a profile that
+        does not cover the approach and the bridge.
+    """
+    if not isinstance(bridge, Bridge):
+        raise TypeError(f"bridge must be a vbi.Bridge, got {type(bridge).__name__}")
+    if not isinstance(vehicle, Vehicle):
+        raise TypeError(f"vehicle must be a vbi.Vehicle, got {type(vehicle).__name__}")
+    if not isinstance(profile, Profile):
+        raise TypeError(f"profile must be a vbi.Profile, got {type(profile).__name__}")
+    speed = check.positive("speed", speed)
+    try:
+        bridge_start = float(bridge_start)
+    except (TypeError, ValueError):
+        raise ValueError(f"bridge_start={bridge_start!r} must be a station in metres") from None
+    if not math.isfinite(bridge_start):
+        raise ValueError(f"bridge_start={bridge_start!r} must be a finite station in metres")
+    end = bridge_start + bridge.length
+    if bridge_start < profile.start or end > profile.end + 1e-9 * max(1.0, abs(end)):
+        raise ValueError(
+            f"the profile (stations {profile.start:g} to {profile.end:g} m) does not cover the "
+            f"approach and the bridge (stations {profile.start:g} to {end:g} m with "
+            f"bridge_start={bridge_start:g} m); extend the profile or move the bridge"
+        )
+    return speed, bridge_start
+
+
+def broadcast(args: dict[str, Any], caller: str) -> tuple[int, dict[str, list]]:
+    """Repeat single values to the common length of the list arguments of a batch function."""
+    lengths = {k: len(v) for k, v in args.items() if isinstance(v, list | tuple | np.ndarray)}
+    if len(set(lengths.values())) > 1:
+        raise ValueError(f"list arguments must have one length; got {lengths}")
+    n = next(iter(lengths.values())) if lengths else 1
+    if n == 0:
+        raise ValueError(f"{caller} needs at least one crossing; got empty lists")
+    expanded = {
+        k: (list(v) if isinstance(v, list | tuple | np.ndarray) else [v] * n)
+        for k, v in args.items()
+    }
+    return n, expanded
+
+
+def parameters(
+    vehicle: Vehicle, speed: float, bridge_start: float, span: float, extra: int = 0
+) -> np.ndarray:
+    """The kernel's parameter vector: the ``P_*`` entries, then ``extra`` for the model."""
+    params = np.zeros(P_COUNT + extra)
+    params[P_MASS] = vehicle.mass
+    params[P_STIFFNESS] = vehicle.stiffness
+    params[P_DAMPING] = vehicle.damping
+    params[P_GRAVITY] = GRAVITY
+    params[P_SPEED] = speed
+    params[P_START] = bridge_start
+    params[P_SPAN] = span
+    return params
+
+
+# ---------------------------------------------------------------------------- grid
+@dataclass(frozen=True)
+class Grid:
+    """Nodes of one crossing: stations [m], road elevations [m] and the span of each step.
+
+    ``span_of_step[k]`` is 0 off the bridge, else the span (1, 2, ...) the wheel is on from
+    node ``k`` to node ``k + 1``; it has one entry per node (the last unused), so that batches
+    slice nodes and steps with the same offsets.  ``dt_max`` is the longest step [s].
+    """
+
+    x: np.ndarray
+    elevation: np.ndarray
+    span_of_step: np.ndarray
+    dt_max: float
+
+
+def node_grid(
+    bridge: Bridge, profile: Profile, speed: float, bridge_start: float, dt: float, stop: float
+) -> Grid:
+    """Nodes: every profile sample before ``stop``, the bridge ends and supports, subdivided.
+
+    A gap between two of those points longer than ``speed * dt`` is cut into equal steps no
+    longer than that.
+    """
+    supports = bridge_start + bridge.span * np.arange(bridge.n_spans + 1)
+    inside = profile.x[(profile.x > profile.start) & (profile.x < stop)]
+    points = np.union1d(np.concatenate(([profile.start], inside, supports)), [stop])
+    points = points[points <= stop]
+    gaps = np.diff(points)
+    keep = np.concatenate(([True], gaps > 1e-12 * max(1.0, abs(stop))))
+    points = points[keep]
+    gaps = np.diff(points)
+    pieces = np.maximum(1, np.ceil(gaps / (speed * dt) - 1e-9)).astype(np.int64)
+    starts = np.repeat(points[:-1], pieces)
+    widths = np.repeat(gaps / pieces, pieces)
+    within = np.arange(pieces.sum()) - np.repeat(np.cumsum(pieces) - pieces, pieces)
+    x = np.append(starts + within * widths, points[-1])
+    elevation = np.interp(x, profile.x, profile.elevation)
+    middle = 0.5 * (x[:-1] + x[1:]) - bridge_start
+    span_of_step = np.zeros(x.size, dtype=np.int64)
+    span_of_step[:-1] = np.where(
+        (middle > 0) & (middle < bridge.length), np.floor(middle / bridge.span) + 1, 0
+    )
+    return Grid(x, elevation, span_of_step, float((widths.max() if widths.size else 0) / speed))
+
+
+# ---------------------------------------------------------------------------- kernel helpers
+@numba.njit(cache=True)
+def hermite_min(a0, a1, d0, d1, h):
+    """Smallest value inside a step of the cubic Hermite interpolant (values a, rates d)."""
+    m0 = h * d0
+    m1 = h * d1
+    c3 = 2.0 * a0 + m0 - 2.0 * a1 + m1
+    c2 = -3.0 * a0 - 2.0 * m0 + 3.0 * a1 - m1
+    c1 = m0
+    best = min(a0, a1)
+    qa = 3.0 * c3
+    qb = 2.0 * c2
+    qc = c1
+    if abs(qa) < 1e-300:
+        if abs(qb) > 1e-300:
+            t = -qc / qb
+            if 0.0 < t < 1.0:
+                best = min(best, ((c3 * t + c2) * t + c1) * t + a0)
+        return best
+    disc = qb * qb - 4.0 * qa * qc
+    if disc < 0.0:
+        return best
+    root = math.sqrt(disc)
+    for t in ((-qb - root) / (2.0 * qa), (-qb + root) / (2.0 * qa)):
+        if 0.0 < t < 1.0:
+            best = min(best, ((c3 * t + c2) * t + c1) * t + a0)
+    return best
+
+
+@numba.njit(cache=True)
+def downward_peak(m0, m1, v0, v1, h):
+    """Largest downward midspan deflection within a step (displacements positive up).
+
+    ``m0, m1`` are the displacements and ``v0, v1`` their rates at the ends of a step of
+    ``h`` seconds; where the rate changes sign the extreme inside the step comes from the
+    cubic Hermite interpolant.
+    """
+    if v0 * v1 <= 0.0:
+        return -hermite_min(m0, m1, v0, v1, h)
+    return max(-m0, -m1)
+
+
+@numba.njit(cache=True)
+def start_summary(summary, n_spans):
+    """Reset a summary vector before a crossing."""
+    for j in range(2):
+        summary[S_PEAK + j] = -np.inf if j < n_spans else np.nan
+    summary[S_MAX_FORCE] = -np.inf
+    summary[S_MAX_AT] = np.nan
+    summary[S_MIN_FORCE] = np.inf
+    summary[S_TENSION_TIME] = 0.0
+    summary[S_BRIDGE_TIME] = 0.0
+
+
+@numba.njit(cache=True)
+def track_contact(summary, force, x, h):
+    """Account the contact force ``force`` [N] at station ``x`` held for ``h`` seconds."""
+    if force > summary[S_MAX_FORCE]:
+        summary[S_MAX_FORCE] = force
+        summary[S_MAX_AT] = x
+    if force < summary[S_MIN_FORCE]:
+        summary[S_MIN_FORCE] = force
+    summary[S_BRIDGE_TIME] += h
+    if force < 0.0:
+        summary[S_TENSION_TIME] += h
+
+
+@numba.njit(cache=True)
+def track_peak(summary, span, peak):
+    """Keep the largest downward midspan deflection of ``span`` (1-based)."""
+    if peak > summary[S_PEAK + span - 1]:
+        summary[S_PEAK + span - 1] = peak
+
+
+# ---------------------------------------------------------------------------- models
+class CrossingModel:
+    """What a crossing model supplies to the shared driver (scipy's ``OdeSolver`` pattern).
+
+    A subclass sets the class attributes and implements the four methods; the driver
+    (:func:`vbi_lib.simulate`, :func:`vbi_lib.simulate_many`) does everything else.  One
+    instance describes one crossing's model inputs, already checked by the driver.
+
+    Attributes
+    ----------
+    name
+        The key of the model in :data:`vbi_lib.models.MODELS`.
+    description
+        One line for listings: the bridge model and the integrator.
+    result_type
+        The :class:`~vbi_lib.models.results.Crossing` subclass the driver returns.
+    """
+
+    name: ClassVar[str]
+    description: ClassVar[str]
+    result_type: ClassVar[type]
+
+    def __init__(
+        self,
+        bridge: Bridge,
+        vehicle: Vehicle,
+        speed: float,
+        bridge_start: float,
+        *,
+        coupled: bool,
+        convective: bool,
+        modes: int | None,
+    ) -> None:
+        self.bridge = bridge
+        self.vehicle = vehicle
+        self.speed = speed
+        self.bridge_start = bridge_start
+        self.coupled = coupled
+        self.convective = convective
+
+    def default_time_step(self) -> tuple[float, str]:
+        """The largest step [s] the model takes by default, and a note saying why."""
+        raise NotImplementedError
+
+    def static_deflection(self) -> float:
+        """The static midspan deflection under the vehicle's weight that the DAF divides by [m]."""
+        raise NotImplementedError
+
+    def integrate(self, grid: Grid) -> tuple[np.ndarray, np.ndarray, dict[str, Any], str]:
+        """Run one crossing over ``grid`` keeping its histories.
+
+        Returns the summary vector, the contact force at every node [N], the model's own
+        result fields (including ``vehicle_displacement``, ``vehicle_velocity`` and
+        ``midspan_displacement``) and a note on the steps taken.
+        """
+        raise NotImplementedError
+
+    @classmethod
+    def integrate_many(cls, models: list[CrossingModel], grids: list[Grid]) -> np.ndarray:
+        """Summaries ``(n, SUMMARY_SIZE)`` of many crossings, no histories kept."""
+        raise NotImplementedError

@@ -1,0 +1,283 @@
+"""One driver for every crossing model: :func:`simulate` and :func:`simulate_many`.
+
+The model is looked up by name in :data:`MODELS` (as ``solve_ivp`` looks up its ``METHODS``);
+the driver checks the inputs, builds the node grid, calls the model's kernel and assembles
+the result, the same way for every model.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+from .. import _validation as check
+from ..bridges import Bridge
+from ..profiles import Profile
+from ..validity import ContactLossWarning, contact_note
+from ..vehicles import Vehicle
+from .base import (
+    S_BRIDGE_TIME,
+    S_MAX_AT,
+    S_MAX_FORCE,
+    S_MIN_FORCE,
+    S_PEAK,
+    S_TENSION_TIME,
+    CrossingModel,
+    broadcast,
+    check_crossing,
+    node_grid,
+)
+from .modal import Modal
+from .one_coordinate import OneCoordinate
+from .results import BatchResult, Crossing
+
+#: The crossing models by name.
+MODELS: dict[str, type[CrossingModel]] = {
+    OneCoordinate.name: OneCoordinate,
+    Modal.name: Modal,
+}
+
+
+def _model(model: object) -> type[CrossingModel]:
+    if isinstance(model, type) and issubclass(model, CrossingModel):
+        return model
+    if not isinstance(model, str) or model not in MODELS:
+        listing = "; ".join(f"{k!r}: {v.description}" for k, v in MODELS.items())
+        raise ValueError(f"model={model!r} is not a crossing model; use one of {listing}")
+    return MODELS[model]
+
+
+def _contact(summary: np.ndarray, weight: float) -> tuple[float, float]:
+    """Smallest contact force over the weight, and the fraction of the time in tension."""
+    bridge_time = summary[..., S_BRIDGE_TIME]
+    fraction = np.divide(
+        summary[..., S_TENSION_TIME],
+        bridge_time,
+        out=np.zeros_like(bridge_time),
+        where=bridge_time > 0,
+    )
+    return summary[..., S_MIN_FORCE] / weight, fraction
+
+
+def simulate(
+    bridge: Bridge,
+    vehicle: Vehicle,
+    profile: Profile,
+    speed: float,
+    bridge_start: float,
+    *,
+    model: str = "one-coordinate",
+    modes: int | None = None,
+    coupled: bool = True,
+    convective: bool = True,
+    dt: float | None = None,
+    free_vibration: float = 0.0,
+) -> Crossing:
+    """Simulate one crossing of a sprung-mass truck over a bridge.
+
+    The truck starts at ``profile.x[0]`` at rest in static equilibrium, drives at constant
+    ``speed`` and the run ends when it leaves the bridge (plus ``free_vibration`` seconds).
+
+    Parameters
+    ----------
+    bridge, vehicle, profile
+        The beam, the sprung mass and the road (stations and elevations in metres).
+    speed
+        Vehicle speed [m/s].
+    bridge_start
+        Station of the first support [m]; the bridge spans
+        ``[bridge_start, bridge_start + n_spans * span]``.
+    model
+        A key of :data:`MODELS`: ``"one-coordinate"`` (default), the study's model (33)-(99),
+        RK4; ``"modal"``, the first ``modes`` exact beam modes, Newmark average acceleration.
+    modes
+        Number of beam modes, for ``model="modal"`` only.
+    coupled
+        ``False`` for the decoupled model (92)-(99): the contact force ignores the bridge.
+    convective
+        Keep the ``v psi' z_b`` term in the wheel's vertical velocity (``False`` is the
+        study's code).
+    dt
+        Largest time step [s]; ``None`` lets the model pick it (and at least one step per
+        profile sample).  The step used is ``Crossing.dt`` and is noted in ``notes``.
+    free_vibration
+        Seconds to continue after the truck leaves the bridge.
+
+    Returns
+    -------
+    Crossing
+        The model's subclass of :class:`~vbi_lib.models.results.Crossing`.
+
+    Raises
+    ------
+    TypeError, ValueError
+        Inputs of the wrong type or outside what is allowed, named in the message.
+
+    Warns
+    -----
+    ContactLossWarning
+        The contact force became tensile on the bridge: the result is outside the model's
+        validity (also in ``notes`` and ``lost_contact``).
+
+    Examples
+    --------
+    >>> import vbi_lib as vbi
+    >>> from vbi_lib import units as u
+    >>> bridge = vbi.Bridge(100 * u.ft, 1, 7.5e12 * u.lbf * u.inch**2, 4.6 * u.kip / u.ft / u.g)
+    >>> truck = vbi.Vehicle.from_frequency(100 * u.slinch, 4.0, 0.10)
+    >>> road = vbi.Profile.flat(450 * u.ft, 1 * u.inch)
+    >>> vbi.simulate(bridge, truck, road, 720 * u.inch / u.s, 320 * u.ft).daf.round(2)
+    array([1.04])
+    >>> run = vbi.simulate(bridge, truck, road, 720 * u.inch, 320 * u.ft, model="modal", modes=5)
+    >>> run.daf.round(2)
+    array([1.04])
+    """
+    kind = _model(model)
+    speed, bridge_start = check_crossing(bridge, vehicle, profile, speed, bridge_start)
+    coupled = check.flag("coupled", coupled)
+    convective = check.flag("convective", convective)
+    free_vibration = check.non_negative("free_vibration", free_vibration)
+    setup = kind(bridge, vehicle, speed, bridge_start, coupled=coupled, convective=convective,
+                 modes=modes)  # fmt: skip
+    notes = []
+    if dt is None:
+        dt, note = setup.default_time_step()
+        notes.append(note)
+    else:
+        dt = check.positive("dt", dt)
+    stop = bridge_start + bridge.length + speed * free_vibration
+    grid = node_grid(bridge, profile, speed, bridge_start, dt, stop)
+    summary, contact, fields, note = setup.integrate(grid)
+    notes.append(note)
+    static = setup.static_deflection()
+    min_ratio, tension = _contact(summary, vehicle.weight)
+    if min_ratio < 0:
+        text = contact_note(float(min_ratio), float(tension))
+        notes.append(text)
+        warnings.warn(text, ContactLossWarning, stacklevel=2)
+    return kind.result_type(
+        model=kind.name,
+        bridge=bridge,
+        vehicle=vehicle,
+        speed=speed,
+        bridge_start=bridge_start,
+        time=(grid.x - grid.x[0]) / speed,
+        position=grid.x,
+        contact_force=contact,
+        span_of_step=grid.span_of_step,
+        daf=summary[S_PEAK : S_PEAK + bridge.n_spans] / static,
+        static_deflection=static,
+        dt=grid.dt_max,
+        coupled=coupled,
+        convective=convective,
+        min_contact_force_ratio=float(min_ratio),
+        tension_fraction=float(tension),
+        notes=tuple(notes),
+        **fields,
+    )
+
+
+def simulate_many(
+    bridges: Bridge | list[Bridge],
+    vehicles: Vehicle | list[Vehicle],
+    profiles: Profile | list[Profile],
+    speeds: float | list[float] | np.ndarray,
+    bridge_starts: float | list[float] | np.ndarray,
+    *,
+    model: str = "one-coordinate",
+    modes: int | list[int] | np.ndarray | None = None,
+    coupled: bool | list[bool] = True,
+    convective: bool | list[bool] = True,
+    dt: float | None = None,
+) -> BatchResult:
+    """DAF and contact checks of many crossings at once, compiled and run in parallel.
+
+    Every argument but ``model`` and ``dt`` is one value or a list; lists must share one
+    length ``n`` and single values are repeated.  Results equal :func:`simulate` crossing by
+    crossing (no histories are kept).
+
+    Returns
+    -------
+    BatchResult
+
+    Warns
+    -----
+    ContactLossWarning
+        Once, naming how many crossings lost contact.
+
+    Examples
+    --------
+    >>> import vbi_lib as vbi
+    >>> b = vbi.Bridge(30.0, 1, 2e10, 8000.0)
+    >>> t = vbi.Vehicle.from_frequency(3.0e4, 3.0, 0.1)
+    >>> r = vbi.simulate_many(b, t, vbi.Profile.flat(130.0, 0.05), [10.0, 20.0], 100.0)
+    >>> r.daf.shape
+    (2, 2)
+    """
+    kind = _model(model)
+    args = {
+        "bridges": bridges,
+        "vehicles": vehicles,
+        "profiles": profiles,
+        "speeds": speeds,
+        "bridge_starts": bridge_starts,
+        "coupled": coupled,
+        "convective": convective,
+        "modes": modes,
+    }
+    n, expanded = broadcast(args, "simulate_many")
+    if dt is not None:
+        dt = check.positive("dt", dt)
+    setups, grids = [], []
+    cache: dict = {}
+    for i in range(n):
+        bridge = expanded["bridges"][i]
+        vehicle = expanded["vehicles"][i]
+        profile = expanded["profiles"][i]
+        try:
+            speed, start = check_crossing(
+                bridge, vehicle, profile, expanded["speeds"][i], expanded["bridge_starts"][i]
+            )
+            setup = kind(
+                bridge,
+                vehicle,
+                speed,
+                start,
+                coupled=check.flag("coupled", expanded["coupled"][i]),
+                convective=check.flag("convective", expanded["convective"][i]),
+                modes=expanded["modes"][i],
+            )
+        except (TypeError, ValueError) as exc:
+            raise type(exc)(f"crossing {i}: {exc}") from None
+        step = setup.default_time_step()[0] if dt is None else dt
+        key = (id(profile), bridge.span, bridge.n_spans, speed, start, step)
+        if key not in cache:
+            cache[key] = node_grid(bridge, profile, speed, start, step, start + bridge.length)
+        setups.append(setup)
+        grids.append(cache[key])
+    summaries = kind.integrate_many(setups, grids)
+    weights = np.array([s.vehicle.weight for s in setups])
+    statics = np.array([s.static_deflection() for s in setups])
+    daf = summaries[:, S_PEAK : S_PEAK + 2] / statics[:, None]
+    min_ratio, tension = _contact(summaries, weights)
+    lost = int((min_ratio < 0).sum())
+    if lost:
+        worst = int(np.argmin(min_ratio))
+        warnings.warn(
+            f"{lost} of {n} crossings lost contact (crossing {worst}: "
+            + contact_note(float(min_ratio[worst]), float(tension[worst]))
+            + ")",
+            ContactLossWarning,
+            stacklevel=2,
+        )
+    return BatchResult(
+        model=kind.name,
+        speed=np.array([s.speed for s in setups]),
+        daf=daf,
+        contact_force_amplification=summaries[:, S_MAX_FORCE] / weights,
+        peak_contact_position=summaries[:, S_MAX_AT],
+        min_contact_force_ratio=min_ratio,
+        tension_fraction=tension,
+        dt=np.array([g.dt_max for g in grids]),
+    )

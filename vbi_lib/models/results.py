@@ -1,0 +1,305 @@
+"""What a crossing returns: one family of results whatever the model.
+
+:class:`Crossing` holds what every model computes (time histories, the DAF of each span, the
+contact-force checks) and offers the same views, export and plots; each model adds its own
+fields in a subclass (the bridge coordinate of the one-coordinate model, the modal
+coordinates of the many-mode model).  :class:`BatchResult` is what
+:func:`vbi_lib.simulate_many` returns for any model: one row of summaries per crossing.
+
+Displacements are positive up (a deflection under load is negative); the DAF divides the
+largest *downward* midspan deflection by the model's static deflection (88)-(91).  Plots and
+tables use the display units of :mod:`vbi_lib.display`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from .. import display
+from ..bridges import Bridge
+from ..vehicles import Vehicle
+
+__all__ = ["BatchResult", "Crossing"]
+
+_KINDS = ("displacement", "deflection", "contact", "vehicle")
+
+
+def _spans(n: int) -> str:
+    return "1 span" if n == 1 else f"{n} spans"
+
+
+@dataclass(frozen=True, eq=False, kw_only=True)
+class Crossing:
+    """One crossing: time histories (SI, displacements positive up) and the DAF of each span.
+
+    Attributes
+    ----------
+    model
+        The model's name (a key of :data:`vbi_lib.models.MODELS`).
+    bridge, vehicle
+        The inputs.
+    speed
+        Vehicle speed [m/s].
+    bridge_start
+        Station of the first support [m].
+    time, position
+        Time [s] from the start and wheel station [m] at every node, shape ``(n_time,)``.
+    vehicle_displacement, vehicle_velocity
+        ``u_v`` [m] from the static position and its rate [m/s].
+    midspan_displacement
+        ``(n_time, n_spans)`` midspan displacement of each span [m].
+    contact_force
+        Force pressing on the road ``R = m_v g + F`` [N] (negative: tension).
+    span_of_step
+        Per node: 0 while the wheel is off the bridge, else the span of the step from the node.
+    daf
+        Per span, the largest downward midspan deflection while the wheel is on that span over
+        the model's static deflection (88)-(91).
+    static_deflection
+        The static deflection the DAF divides by [m].
+    dt
+        Largest time step used [s].
+    coupled, convective
+        The options the crossing ran with.
+    min_contact_force_ratio
+        Smallest contact force while on the bridge over the weight: below 0 the tyre would
+        have to pull the road down (the model's contact assumption failed).
+    tension_fraction
+        Fraction of the time on the bridge with a tensile contact force.
+    notes
+        Sentences on how the crossing was run and where it left the model's validity.
+    """
+
+    model: str
+    bridge: Bridge
+    vehicle: Vehicle
+    speed: float
+    bridge_start: float
+    time: np.ndarray
+    position: np.ndarray
+    vehicle_displacement: np.ndarray
+    vehicle_velocity: np.ndarray
+    midspan_displacement: np.ndarray
+    contact_force: np.ndarray
+    span_of_step: np.ndarray
+    daf: np.ndarray
+    static_deflection: float
+    dt: float
+    coupled: bool = True
+    convective: bool = True
+    min_contact_force_ratio: float = np.nan
+    tension_fraction: float = 0.0
+    notes: tuple[str, ...] = ()
+
+    # ------------------------------------------------------------------ views
+    @property
+    def on_bridge(self) -> np.ndarray:
+        """True at nodes where the wheel is on the bridge (ends included), shape ``(n_time,)``."""
+        rel = self.position - self.bridge_start
+        return (rel >= -1e-12) & (rel <= self.bridge.length + 1e-12)
+
+    @property
+    def contact_force_ratio(self) -> np.ndarray:
+        """Contact force over the vehicle's weight at every node [-]."""
+        return self.contact_force / self.vehicle.weight
+
+    @property
+    def contact_force_amplification(self) -> float:
+        """Largest contact force while on the bridge over the vehicle's weight [-]."""
+        return float(self.contact_force[self.on_bridge].max() / self.vehicle.weight)
+
+    @property
+    def lost_contact(self) -> bool:
+        """Whether the contact force became tensile on the bridge (outside validity)."""
+        return bool(self.min_contact_force_ratio < 0.0)
+
+    # ------------------------------------------------------------------ export
+    def to_dataframe(self) -> pd.DataFrame:
+        """The histories as a table, one row per node, in the display units.
+
+        Columns: time, wheel position from the bridge start, each span's midspan
+        displacement, the vehicle's displacement, the contact force and its ratio to the
+        weight.
+        """
+        columns = {
+            display.label("time", "time"): self.time,
+            display.label("position from bridge start", "length"): display.value(
+                self.position - self.bridge_start, "length"
+            ),
+        }
+        for j in range(self.midspan_displacement.shape[1]):
+            columns[display.label(f"midspan displacement, span {j + 1}", "deflection")] = (
+                display.value(self.midspan_displacement[:, j], "deflection")
+            )
+        columns[display.label("vehicle displacement", "deflection")] = display.value(
+            self.vehicle_displacement, "deflection"
+        )
+        columns[display.label("contact force", "force")] = display.value(
+            self.contact_force, "force"
+        )
+        columns["contact force / weight [-]"] = self.contact_force_ratio
+        return pd.DataFrame(columns)
+
+    def plot(self, ax=None, kind: str = "displacement", span: int | None = None):  # noqa: ANN001, ANN201
+        """Plot a history against the wheel position from the start of the bridge.
+
+        Parameters
+        ----------
+        ax
+            A matplotlib axes; a new figure when ``None``.
+        kind
+            ``"displacement"``: midspan displacement over the static deflection (a DAF scale);
+            ``"deflection"``: midspan displacement in display units; ``"contact"``: contact
+            force over the weight, with the zero line where contact is lost;
+            ``"vehicle"``: the vehicle's displacement.
+        span
+            Only this span (1-based) for the midspan kinds; all spans by default.
+
+        Returns
+        -------
+        matplotlib.axes.Axes
+        """
+        import matplotlib.pyplot as plt
+
+        if kind not in _KINDS:
+            raise ValueError(f"kind={kind!r} is not known; use one of {', '.join(_KINDS)}")
+        if ax is None:
+            _, ax = plt.subplots(figsize=(7, 3.2))
+        x = display.value(self.position - self.bridge_start, "length")
+        if kind in ("displacement", "deflection"):
+            spans = range(self.bridge.n_spans) if span is None else [span - 1]
+            for j in spans:
+                y = self.midspan_displacement[:, j]
+                if kind == "displacement":
+                    y = y / self.static_deflection
+                else:
+                    y = display.value(y, "deflection")
+                ax.plot(x, y, label=f"span {j + 1}")
+            if kind == "displacement":
+                ax.set_ylabel("midspan displacement / static deflection [-]")
+            else:
+                ax.set_ylabel(display.label("midspan displacement", "deflection"))
+            if self.bridge.n_spans > 1:
+                ax.legend(loc="best")
+        elif kind == "contact":
+            ax.plot(x, self.contact_force_ratio, color="C3")
+            ax.axhline(0.0, color="k", lw=0.8)
+            ax.set_ylabel("contact force / weight [-]")
+        else:
+            ax.plot(x, display.value(self.vehicle_displacement, "deflection"), color="C2")
+            ax.set_ylabel(display.label("vehicle displacement", "deflection"))
+        ax.axvspan(0, display.value(self.bridge.length, "length"), color="0.93", zorder=0)
+        ax.set_xlabel(display.label("wheel position from the start of the bridge", "length"))
+        return ax
+
+    def __repr__(self) -> str:
+        dafs = ", ".join(f"{d:.3f}" for d in self.daf)
+        text = (
+            f"{type(self).__name__}({_spans(self.bridge.n_spans)}, "
+            f"{display.fmt(self.speed, 'speed')}: DAF {dafs}"
+        )
+        if self.lost_contact:
+            text += f"; CONTACT LOST (min R/W {self.min_contact_force_ratio:.2f})"
+        return text + ")"
+
+
+@dataclass(frozen=True, eq=False, kw_only=True)
+class BatchResult:
+    """Summaries of many crossings (no time histories), one entry per crossing.
+
+    Attributes
+    ----------
+    model
+        The model's name.
+    speed
+        Vehicle speed of each crossing [m/s], shape ``(n,)``.
+    daf
+        ``(n, 2)`` DAF of each span (NaN in the second column for one-span bridges).
+    contact_force_amplification
+        Largest contact force on the bridge over the weight, ``(n,)``.
+    peak_contact_position
+        Station of that force [m], ``(n,)``.
+    min_contact_force_ratio
+        Smallest contact force on the bridge over the weight, ``(n,)``; below 0 the crossing
+        left the model's validity (the tyre would pull the road down).
+    tension_fraction
+        Fraction of the time on the bridge with a tensile contact force, ``(n,)``.
+    dt
+        Largest time step of each crossing [s], ``(n,)``.
+    """
+
+    model: str
+    speed: np.ndarray
+    daf: np.ndarray
+    contact_force_amplification: np.ndarray
+    peak_contact_position: np.ndarray
+    min_contact_force_ratio: np.ndarray
+    tension_fraction: np.ndarray
+    dt: np.ndarray
+
+    def __len__(self) -> int:
+        return int(self.speed.size)
+
+    @property
+    def lost_contact(self) -> np.ndarray:
+        """Whether each crossing's contact force became tensile on the bridge, ``(n,)``."""
+        return self.min_contact_force_ratio < 0.0
+
+    def to_dataframe(self) -> pd.DataFrame:
+        """One row per crossing: speed (display units), DAFs and the contact checks."""
+        return pd.DataFrame(
+            {
+                display.label("speed", "speed"): display.value(self.speed, "speed"),
+                "daf span 1": self.daf[:, 0],
+                "daf span 2": self.daf[:, 1],
+                "contact force amplification": self.contact_force_amplification,
+                "min contact force ratio": self.min_contact_force_ratio,
+                "tension fraction": self.tension_fraction,
+                "lost contact": self.lost_contact,
+                display.label("dt", "time"): self.dt,
+            }
+        ).rename_axis("crossing")
+
+    def plot(self, ax=None, kind: str = "daf"):  # noqa: ANN001, ANN201
+        """Plot the DAF (``kind="daf"``) or the contact-force extremes (``"contact"``) by speed.
+
+        Crossings that lost contact are marked with crosses.
+        """
+        import matplotlib.pyplot as plt
+
+        if kind not in ("daf", "contact"):
+            raise ValueError(f"kind={kind!r} is not known; use 'daf' or 'contact'")
+        if ax is None:
+            _, ax = plt.subplots(figsize=(7, 3.2))
+        order = np.argsort(self.speed, kind="stable")
+        v = display.value(self.speed[order], "speed")
+        lost = self.lost_contact[order]
+        if kind == "daf":
+            for j in range(2):
+                y = self.daf[order, j]
+                if np.isnan(y).all():
+                    continue
+                ax.plot(v, y, "o-", ms=3, label=f"span {j + 1}")
+                ax.plot(v[lost], y[lost], "x", color="k", ms=7)
+            ax.set_ylabel("DAF [-]")
+        else:
+            ax.plot(v, self.contact_force_amplification[order], "o-", ms=3, label="largest")
+            ax.plot(v, self.min_contact_force_ratio[order], "o-", ms=3, label="smallest")
+            ax.axhline(0.0, color="k", lw=0.8)
+            ax.set_ylabel("contact force / weight [-]")
+        if lost.any():
+            ax.plot([], [], "x", color="k", label="contact lost (outside validity)")
+        ax.legend(loc="best")
+        ax.set_xlabel(display.label("speed", "speed"))
+        return ax
+
+    def __repr__(self) -> str:
+        worst = np.nanmax(self.daf) if np.isfinite(self.daf).any() else np.nan
+        text = f"BatchResult({len(self)} crossings, {self.model}: largest DAF {worst:.3f}"
+        lost = int(self.lost_contact.sum())
+        if lost:
+            text += f"; CONTACT LOST in {lost}"
+        return text + ")"

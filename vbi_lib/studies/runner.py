@@ -1,0 +1,506 @@
+"""The study runner: every row of a scenario table simulated in chunks on any executor.
+
+Rows are cut into chunks; each chunk is one call of :func:`~vbi_lib.simulate_many` per model
+(compiled, no time histories kept) inside a worker of a :class:`concurrent.futures.Executor`:
+a local process pool by default, or any executor you pass, such as
+``dask.distributed.Client(...).get_executor()``.  Every crossing depends only on its own row,
+so the table is the same, bit for bit, whatever the executor and the chunk size.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures as cf
+import math
+import multiprocessing
+import os
+import tempfile
+import warnings
+from collections.abc import Sequence
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import asdict
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from .. import _validation as check
+from ..bridges import Bridge
+from ..profiles import Profile
+from ..validity import ContactLossWarning
+from .recipes import extent, profile_label
+from .scenarios import TAG_PREFIX, _rows, validate
+
+#: Default number of crossings per chunk handed to a worker.
+DEFAULT_CHUNK_SIZE = 250
+#: Studies with fewer crossings than this run in this process by default.
+SERIAL_BELOW = 1500
+
+
+# ---------------------------------------------------------------------------- workers
+def _set_threads(threads: int | None) -> None:
+    if threads:
+        import numba
+
+        numba.set_num_threads(max(1, min(int(threads), numba.config.NUMBA_NUM_THREADS)))
+
+
+def _init_worker() -> None:
+    """Process-pool initializer: one numba thread per worker; Ctrl-C is the parent's."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _set_threads(1)
+
+
+def _road(profile: Profile, offset: float) -> Profile:
+    """The road slid back by ``offset``: at station ``x`` it has the profile's ``x + offset``."""
+    if offset == 0.0:
+        return profile
+    return profile.segment(profile.start + offset, profile.end).shifted(-offset)
+
+
+def _iri_of_spans(road: Profile, bridge: Bridge, start: float) -> np.ndarray:
+    """IRI [m/km] of the road over each span (the golden car starts on the bridge)."""
+    from ..roughness import iri  # imported only when a study asks for IRI
+
+    out = np.full(2, np.nan)
+    deck = road.segment(start, start + bridge.length)
+    values = iri(deck, segment_length=bridge.span).iri if bridge.n_spans > 1 else [iri(deck)]
+    out[: bridge.n_spans] = np.asarray(values, dtype=float)[: bridge.n_spans]
+    return out
+
+
+_SUMMARIES = (
+    "contact_force_amplification",
+    "peak_contact_position",
+    "min_contact_force_ratio",
+    "tension_fraction",
+    "dt",
+)
+
+
+def _run_chunk(payload: dict[str, Any]) -> dict[str, np.ndarray]:
+    """Simulate one chunk of scenarios (runs inside a worker; keeps no time histories)."""
+    from ..models import simulate_many
+
+    _set_threads(payload["threads"])
+    profiles = [p if isinstance(p, Profile) else p.build() for p in payload["profiles"]]
+    bridges, vehicles = payload["bridges"], payload["vehicles"]
+    b, v, p = payload["b"], payload["v"], payload["p"]
+    speed, start, offset = payload["speed"], payload["start"], payload["offset"]
+    coupled, convective = payload["coupled"], payload["convective"]
+    model, modes = payload["model"], payload["modes"]
+    n = speed.size
+    roads: dict[tuple[int, float], Profile] = {}
+    for i in range(n):
+        key = (int(p[i]), float(offset[i]))
+        if key not in roads:
+            roads[key] = _road(profiles[key[0]], key[1])
+    road = [roads[(int(p[i]), float(offset[i]))] for i in range(n)]
+    out = {"daf": np.full((n, 2), np.nan)} | {name: np.full(n, np.nan) for name in _SUMMARIES}
+    for name in dict.fromkeys(model):
+        rows = np.flatnonzero(model == name)
+        with warnings.catch_warnings():
+            # the table's columns say which crossings lost contact; run() warns once
+            warnings.simplefilter("ignore", ContactLossWarning)
+            result = simulate_many(
+                [bridges[b[i]] for i in rows],
+                [vehicles[v[i]] for i in rows],
+                [road[i] for i in rows],
+                speed[rows],
+                start[rows],
+                model=name,
+                modes=[int(m) for m in modes[rows]] if name == "modal" else None,
+                coupled=list(coupled[rows]),
+                convective=list(convective[rows]),
+                dt=payload["dt"],
+            )
+        out["daf"][rows] = result.daf
+        for column in _SUMMARIES:
+            out[column][rows] = getattr(result, column)
+    if payload["iri"]:
+        out["iri"] = np.empty((n, 2))
+        done: dict[tuple[int, int, float], np.ndarray] = {}
+        for i in range(n):
+            key = (id(road[i]), int(b[i]), float(start[i]))
+            if key not in done:
+                done[key] = _iri_of_spans(road[i], bridges[b[i]], start[i])
+            out["iri"][i] = done[key]
+    return out
+
+
+# ---------------------------------------------------------------------------- running
+_POOL: cf.ProcessPoolExecutor | None = None
+
+
+def default_executor(max_workers: int | None = None) -> cf.ProcessPoolExecutor:
+    """The local process pool :func:`run` uses by default (one numba thread per worker).
+
+    Workers start with ``spawn`` (safe with numba's threads) and live for the session, so
+    their import and compile-cache cost is paid once.
+    """
+    global _POOL
+    workers = max_workers or os.cpu_count() or 1
+    stale = _POOL is not None and (
+        _POOL._max_workers != workers or _POOL._broken or _POOL._shutdown_thread
+    )
+    if stale:
+        _POOL.shutdown(wait=True, cancel_futures=True)
+        _POOL = None
+    if _POOL is None:
+        _POOL = cf.ProcessPoolExecutor(
+            max_workers=workers,
+            mp_context=multiprocessing.get_context("spawn"),
+            initializer=_init_worker,
+        )
+    return _POOL
+
+
+def shutdown_default_executor() -> None:
+    """Stop the worker processes of :func:`default_executor` (the next run starts new ones)."""
+    global _POOL
+    if _POOL is not None:
+        _POOL.shutdown(wait=True, cancel_futures=True)
+        _POOL = None
+
+
+class _Serial(cf.Executor):
+    """Runs each task at once in this process (numba's threads do the parallel work)."""
+
+    def submit(self, fn, /, *args, **kwargs):  # noqa: ANN001, ANN201
+        future: cf.Future = cf.Future()
+        try:
+            future.set_result(fn(*args, **kwargs))
+        except BaseException as exc:  # noqa: BLE001 - handed to the caller through the future
+            future.set_exception(exc)
+        return future
+
+
+def _labels(objects: Sequence[Any], kind: str) -> list[str]:
+    out = []
+    for obj in objects:
+        if kind == "bridge":
+            out.append(f"{obj.n_spans} x {obj.span:g} m, {obj.first_frequency_hz:.2f} Hz")
+        elif kind == "vehicle":
+            out.append(f"{obj.mass:.0f} kg, {obj.frequency_hz:.2f} Hz")
+        else:
+            out.append(profile_label(obj))
+    return out
+
+
+def _profile_columns(profiles: Sequence[Any]) -> dict[str, list[Any]]:
+    """Scalar description of each unique profile (recipe fields, or extent and spacing)."""
+    records = []
+    for p in profiles:
+        if isinstance(p, Profile):
+            rec = {"kind": "profile", "start": p.start, "length": p.length, "spacing": p.spacing}
+        else:
+            rec = {"kind": type(p).__name__}
+            try:
+                items = asdict(p).items() if hasattr(p, "__dataclass_fields__") else ()
+            except TypeError:
+                items = ()
+            for key, value in items:
+                if value is None or isinstance(value, str | int | float | bool | np.number):
+                    rec[key] = value
+        records.append(rec)
+    keys: list[str] = []
+    for rec in records:
+        keys += [k for k in rec if k not in keys]
+    return {f"profile_{k}": [rec.get(k) for rec in records] for k in keys}
+
+
+def run(
+    scenarios: Any,
+    executor: cf.Executor | str | None = None,
+    *,
+    chunk_size: int | None = None,
+    progress: bool | None = None,
+    iri: bool = False,
+    dt: float | None = None,
+    threads_per_task: int | None = 1,
+) -> pd.DataFrame:
+    """Simulate every scenario and return one tidy row per crossing.
+
+    Parameters
+    ----------
+    scenarios
+        A scenario table (:func:`grid`, :func:`monte_carlo`, or your own DataFrame or list of
+        dicts with the columns of :data:`REQUIRED_COLUMNS` and :data:`OPTIONAL_COLUMNS`).
+        It is checked in full (:func:`validate`) before any work starts.
+    executor
+        Any :class:`concurrent.futures.Executor` (a ``ProcessPoolExecutor``, or a Dask
+        cluster's ``Client(...).get_executor()``), ``"serial"`` for this process, or ``None``:
+        this process for small studies (fewer than :data:`SERIAL_BELOW` crossings), else the
+        local process pool :func:`default_executor`.  Give a process pool the ``spawn``
+        context (``fork`` after numba's OpenMP threads have run is unsafe); in a script, run
+        the study under ``if __name__ == "__main__":``.
+    chunk_size
+        Crossings per task; default about four tasks per worker, at most
+        :data:`DEFAULT_CHUNK_SIZE`.  Results do not depend on it.
+    progress
+        ``True`` always shows a tqdm bar, ``False`` never, ``None`` once a run passes 1 s.
+    iri
+        Also compute the IRI of the road over each span (``iri_1``, ``iri_2`` [m/km]).
+    dt
+        Largest time step [s]; ``None`` lets each crossing pick ``0.1 / omega_max``.
+    threads_per_task
+        numba threads a task may use inside a worker of a user-given executor (the default
+        pool always uses one; ``"serial"`` uses numba's default).
+
+    Returns
+    -------
+    pandas.DataFrame
+        Indexed like ``scenarios``.  Inputs as plain columns: the ``*_name`` labels,
+        ``bridge_span`` [m], ``bridge_n_spans``, ``bridge_EI`` [N m^2],
+        ``bridge_mass_per_length`` [kg/m], ``bridge_damping_ratio``, ``bridge_f1_hz``,
+        ``vehicle_mass`` [kg], ``vehicle_stiffness`` [N/m], ``vehicle_damping`` [N s/m],
+        ``vehicle_f_hz``, ``vehicle_damping_ratio``, ``profile_*`` (the recipe's fields),
+        ``speed`` [m/s], ``bridge_start``, ``profile_offset`` [m], ``coupled``,
+        ``convective``, ``model``, ``modes`` and any ``tag_*`` columns; results: ``daf_1``,
+        ``daf_2`` (NaN for one span), ``daf`` (the larger), ``contact_force_amplification``,
+        ``peak_contact_position`` [m] and ``peak_contact_time`` [s from the start] of the
+        largest contact force on the bridge; the contact checks
+        ``min_contact_force_ratio``, ``tension_fraction`` and ``lost_contact`` (a crossing
+        that lost contact is outside the model's validity; one ``ContactLossWarning`` says how
+        many did); ``dt`` [s] and, on request, ``iri_1``, ``iri_2``.
+
+    Examples
+    --------
+    >>> import vbi_lib as vbi
+    >>> from vbi_lib.studies import FlatProfile, grid
+    >>> s = grid(vbi.Bridge(30.0, 1, 2e10, 8000.0), vbi.Vehicle.from_frequency(3e4, 3.0),
+    ...          FlatProfile(130.0, 0.05), [10.0, 20.0], 100.0)
+    >>> run(s, "serial")["daf"].round(3).tolist()
+    [1.025, 1.072]
+    """
+    table = validate(scenarios)
+    n = len(table)
+    if isinstance(executor, str):
+        if executor != "serial":
+            raise ValueError(f"executor={executor!r}: give an Executor, 'serial' or None")
+        pool, threads = _Serial(), None
+    elif executor is None:
+        if n < SERIAL_BELOW:
+            pool, threads = _Serial(), None
+        else:
+            pool, threads = default_executor(), 1
+    elif isinstance(executor, cf.Executor):
+        pool, threads = executor, threads_per_task
+    else:
+        raise TypeError(
+            f"executor must be a concurrent.futures.Executor, 'serial' or None; got "
+            f"{type(executor).__name__}"
+        )
+    workers = getattr(pool, "_max_workers", None) or os.cpu_count() or 1
+    if chunk_size is None:
+        chunk_size = max(1, min(DEFAULT_CHUNK_SIZE, math.ceil(n / (4 * workers))))
+    elif not isinstance(chunk_size, int | np.integer) or chunk_size < 1:
+        raise ValueError(f"chunk_size={chunk_size!r} must be a positive integer")
+    if dt is not None:
+        dt = check.positive("dt", dt)
+
+    b_code, bridges = pd.factorize(table["bridge"])
+    v_code, vehicles = pd.factorize(table["vehicle"])
+    p_code, profiles = pd.factorize(table["profile"])
+    arrays = {
+        "speed": table["speed"].to_numpy(float),
+        "start": table["bridge_start"].to_numpy(float),
+        "offset": table["profile_offset"].to_numpy(float),
+        "coupled": table["coupled"].to_numpy(bool),
+        "convective": table["convective"].to_numpy(bool),
+        "model": table["model"].to_numpy(dtype=object),
+        "modes": table["modes"].to_numpy(dtype=object),
+    }
+    # rows sharing a profile go to the same chunk so the worker builds it once
+    order = np.lexsort((arrays["offset"], p_code))
+    chunks = [order[i : i + chunk_size] for i in range(0, n, chunk_size)]
+
+    def payload(rows: np.ndarray) -> dict[str, Any]:
+        ub, b = np.unique(b_code[rows], return_inverse=True)
+        uv, v = np.unique(v_code[rows], return_inverse=True)
+        up, p = np.unique(p_code[rows], return_inverse=True)
+        return {
+            "bridges": [bridges[i] for i in ub],
+            "vehicles": [vehicles[i] for i in uv],
+            "profiles": [profiles[i] for i in up],
+            "b": b,
+            "v": v,
+            "p": p,
+            **{k: a[rows] for k, a in arrays.items()},
+            "dt": dt,
+            "iri": bool(iri),
+            "threads": threads,
+        }
+
+    daf = np.full((n, 2), np.nan)
+    summaries = {name: np.full(n, np.nan) for name in _SUMMARIES}
+    iri_values = np.full((n, 2), np.nan)
+    from tqdm import tqdm
+
+    bar = tqdm(
+        total=n,
+        unit="crossing",
+        disable=progress is False,
+        delay=0.0 if progress else 1.0,
+        smoothing=0.1,
+    )
+    if isinstance(pool, _Serial):
+        import numba
+
+        threads_before = numba.get_num_threads()
+    in_flight: dict[cf.Future, np.ndarray] = {}
+    limit = max(8, 3 * workers)
+    pending = iter(chunks)
+    try:
+        while True:
+            for rows in pending:
+                in_flight[pool.submit(_run_chunk, payload(rows))] = rows
+                if len(in_flight) >= limit:
+                    break
+            if not in_flight:
+                break
+            done, _ = cf.wait(list(in_flight), return_when=cf.FIRST_COMPLETED)
+            for future in done:
+                rows = in_flight.pop(future)
+                try:
+                    result = future.result()
+                except BrokenProcessPool:
+                    raise
+                except Exception as exc:
+                    raise RuntimeError(
+                        f"crossings in {_rows(np.isin(np.arange(n), rows), table.index)} "
+                        f"failed: {exc}"
+                    ) from exc
+                daf[rows] = result["daf"]
+                for name in _SUMMARIES:
+                    summaries[name][rows] = result[name]
+                if iri:
+                    iri_values[rows] = result["iri"]
+                bar.update(rows.size)
+    except BrokenProcessPool as exc:
+        raise RuntimeError(
+            "a worker of the process pool died; in a script, start the study under "
+            "`if __name__ == '__main__':` (worker processes are spawned and import the script)"
+        ) from exc
+    finally:
+        for future in in_flight:
+            future.cancel()
+        bar.close()
+        if isinstance(pool, _Serial):
+            numba.set_num_threads(threads_before)
+
+    out: dict[str, Any] = {}
+    for kind, codes, objects in (
+        ("bridge", b_code, bridges),
+        ("vehicle", v_code, vehicles),
+        ("profile", p_code, profiles),
+    ):
+        given = table[f"{kind}_name"] if f"{kind}_name" in table.columns else None
+        labels = np.array(_labels(objects, kind), dtype=object)[codes]
+        if given is not None:
+            labels = np.where(given.isna().to_numpy(), labels, given.to_numpy(dtype=object))
+        out[f"{kind}_name"] = labels
+    bridge_cols = {
+        "bridge_span": [x.span for x in bridges],
+        "bridge_n_spans": [x.n_spans for x in bridges],
+        "bridge_EI": [x.EI for x in bridges],
+        "bridge_mass_per_length": [x.mass_per_length for x in bridges],
+        "bridge_damping_ratio": [x.damping_ratio for x in bridges],
+        "bridge_f1_hz": [x.first_frequency_hz for x in bridges],
+    }
+    vehicle_cols = {
+        "vehicle_mass": [x.mass for x in vehicles],
+        "vehicle_stiffness": [x.stiffness for x in vehicles],
+        "vehicle_damping": [x.damping for x in vehicles],
+        "vehicle_f_hz": [x.frequency_hz for x in vehicles],
+        "vehicle_damping_ratio": [x.damping_ratio for x in vehicles],
+    }
+    for cols, codes in ((bridge_cols, b_code), (vehicle_cols, v_code)):
+        for name, values in cols.items():
+            out[name] = np.asarray(values)[codes]
+    for name, values in _profile_columns(list(profiles)).items():
+        column = pd.Series(values, dtype=object)
+        numeric = pd.to_numeric(column, errors="coerce")
+        if numeric.notna().sum() == column.notna().sum():
+            column = numeric
+        out[name] = column.to_numpy()[p_code]
+    out["speed"] = arrays["speed"]
+    out["bridge_start"] = arrays["start"]
+    out["profile_offset"] = arrays["offset"]
+    out["coupled"] = arrays["coupled"]
+    out["convective"] = arrays["convective"]
+    out["model"] = arrays["model"]
+    out["modes"] = table["modes"].to_numpy()
+    for column in table.columns:
+        if str(column).startswith(TAG_PREFIX):
+            out[column] = table[column].to_numpy()
+    out["daf_1"] = daf[:, 0]
+    out["daf_2"] = daf[:, 1]
+    out["daf"] = np.fmax(daf[:, 0], daf[:, 1])
+    out["contact_force_amplification"] = summaries["contact_force_amplification"]
+    out["peak_contact_position"] = where = summaries["peak_contact_position"]
+    starts = np.array([extent(p)[0] for p in profiles])[p_code]
+    out["peak_contact_time"] = (where - starts) / arrays["speed"]
+    out["min_contact_force_ratio"] = summaries["min_contact_force_ratio"]
+    out["tension_fraction"] = summaries["tension_fraction"]
+    out["lost_contact"] = lost = summaries["min_contact_force_ratio"] < 0
+    out["dt"] = summaries["dt"]
+    if lost.any():
+        warnings.warn(
+            f"{int(lost.sum())} of {n} crossings lost contact (column lost_contact): the "
+            "contact force became tensile, which the model's contact assumption excludes; "
+            "their DAFs are outside the model's validity",
+            ContactLossWarning,
+            stacklevel=2,
+        )
+    if iri:
+        out["iri_1"] = iri_values[:, 0]
+        out["iri_2"] = iri_values[:, 1]
+    return pd.DataFrame(out, index=table.index.copy())
+
+
+# ---------------------------------------------------------------------------- saving
+def save(results: pd.DataFrame, path: str | os.PathLike[str]) -> Path:
+    """Write a results table to ``.parquet`` or ``.csv`` (never a half-written file).
+
+    The table is written to a temporary file beside ``path`` and moved into place.
+
+    Examples
+    --------
+    >>> import pandas as pd, tempfile, os
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = save(pd.DataFrame({"daf": [1.1, 1.2]}), os.path.join(d, "s.csv"))
+    ...     load(p)["daf"].tolist()
+    [1.1, 1.2]
+    """
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix not in (".parquet", ".pq", ".csv"):
+        raise ValueError(f"path={str(path)!r}: save to a '.parquet' or '.csv' file")
+    if not isinstance(results, pd.DataFrame):
+        raise TypeError(f"results must be a pandas.DataFrame, got {type(results).__name__}")
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(handle)
+    try:
+        if suffix == ".csv":
+            results.to_csv(temporary, index=False)
+        else:
+            results.to_parquet(temporary, index=False)
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def load(path: str | os.PathLike[str]) -> pd.DataFrame:
+    """Read a table written by :func:`save` (``.parquet`` or ``.csv``)."""
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix == ".csv":
+        return pd.read_csv(path)
+    if suffix in (".parquet", ".pq"):
+        return pd.read_parquet(path)
+    raise ValueError(f"path={str(path)!r}: load a '.parquet' or '.csv' file")

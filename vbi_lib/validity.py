@@ -1,0 +1,37 @@
+"""Warnings the library raises when a result leaves the model's range of validity.
+
+Every warning is a :class:`VbiWarning`, so one filter silences or raises them all
+(``warnings.simplefilter("error", vbi.VbiWarning)``).  Results that leave validity also say so
+in their ``notes`` and summary columns; the warning is the signal for scripts.
+"""
+
+from __future__ import annotations
+
+__all__ = ["ContactLossWarning", "VbiWarning", "contact_note"]
+
+
+class VbiWarning(UserWarning):
+    """Base class of the library's warnings."""
+
+
+class ContactLossWarning(VbiWarning):
+    """The contact force fell below zero: the tyre would have to pull the road down.
+
+    The study's sprung mass is attached to the road; a real tyre can only push.  A crossing in
+    which the computed contact force becomes tensile is outside the model's validity, and its
+    DAF is not a prediction of a real truck's effect.
+    """
+
+
+def contact_note(min_ratio: float, tension_fraction: float) -> str:
+    """One sentence on a loss of contact, for notes and warnings.
+
+    >>> contact_note(-1.5, 0.12)[:62]
+    'contact lost: the contact force fell to -1.50 times the weight'
+    """
+    return (
+        f"contact lost: the contact force fell to {min_ratio:.2f} times the weight and was "
+        f"tensile for {tension_fraction:.0%} of the time on the bridge; the model assumes the "
+        "tyre never leaves the road, so this result is outside its validity (a real tyre "
+        "would lift off)"
+    )
