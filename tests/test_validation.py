@@ -8,6 +8,7 @@ to the finite-element results: every one comes from the row's bridge and truck d
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -15,7 +16,8 @@ import pytest
 
 import vbi_lib as vbi
 from vbi_lib import units as u
-from vbi_lib.modal import agreement, assessment_inputs, simulate_modal_many
+from vbi_lib.studies import agreement
+from vbi_lib.study_data import assessment_inputs
 
 SPEED = 720 * u.inch
 BRIDGE_START = 3840 * u.inch
@@ -34,6 +36,9 @@ def assessment(shared_data: Path):  # noqa: ANN201
     one_span = table.n_spans.to_numpy() == 1
     fe = table.fe_daf.to_numpy()
 
+    # most of these crossings lose contact (the study's worst-case truck); that is
+    # reported by the models and examined in the book, not here
+    warnings.simplefilter("ignore", vbi.ContactLossWarning)
     study_beams, trucks, roads = assessment_inputs(table, profiles, beam="study")
     two_dof = np.array(
         [
@@ -42,7 +47,9 @@ def assessment(shared_data: Path):  # noqa: ANN201
         ]
     )
     exact_beams, _, _ = assessment_inputs(table, profiles, beam="exact")
-    many = simulate_modal_many(exact_beams, trucks, roads, SPEED, BRIDGE_START, 5)
+    many = vbi.simulate_many(
+        exact_beams, trucks, roads, SPEED, BRIDGE_START, model="modal", modes=5
+    )
     return {
         "table": table,
         "fe": fe,

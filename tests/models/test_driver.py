@@ -1,0 +1,126 @@
+"""The driver's contract: one simulate for every model, keyword-only options, one result family."""
+
+from __future__ import annotations
+
+import warnings
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from problems import MODEL_CASES, build_case, flat  # noqa: E402
+
+import vbi_lib as vbi  # noqa: E402
+from vbi_lib import display  # noqa: E402
+
+MODELS = pytest.mark.parametrize("options", MODEL_CASES.values(), ids=MODEL_CASES.keys())
+
+
+def small() -> tuple[vbi.Bridge, vbi.Vehicle, vbi.Profile, float, float]:
+    bridge = vbi.Bridge(20.0, 2, 8e9, 6000.0)
+    return bridge, vbi.Vehicle.from_frequency(2e4, 3.0, 0.1), flat(bridge, 5.0), 20.0, 5.0
+
+
+def test_options_after_the_five_inputs_are_keyword_only() -> None:
+    """``simulate(b, t, r, v, s, 5)`` once meant ``coupled=5``: now it is refused."""
+    with pytest.raises(TypeError, match="positional"):
+        vbi.simulate(*small(), False)
+    with pytest.raises(TypeError, match="positional"):
+        vbi.simulate_many(*small(), False)
+
+
+@MODELS
+def test_every_model_returns_a_crossing_that_names_it(options: dict) -> None:
+    crossing = vbi.simulate(*small(), **options)
+    assert isinstance(crossing, vbi.Crossing)
+    assert crossing.model == options.get("model", "one-coordinate")
+    assert isinstance(crossing, vbi.MODELS[crossing.model].result_type)
+    batch = vbi.simulate_many(*small(), **options)
+    assert isinstance(batch, vbi.BatchResult) and batch.model == crossing.model
+    assert crossing.midspan_displacement.shape == (crossing.time.size, 2)
+
+
+def test_models_are_looked_up_by_name() -> None:
+    with pytest.raises(ValueError, match="model='Modal' is not a crossing model"):
+        vbi.simulate(*small(), model="Modal", modes=3)
+    with pytest.raises(ValueError, match="modes=5 applies to model='modal'"):
+        vbi.simulate(*small(), modes=5)
+    with pytest.raises(ValueError, match="modes=None"):
+        vbi.simulate(*small(), model="modal")
+
+
+@pytest.mark.parametrize("name", ["coupled", "convective"])
+@pytest.mark.parametrize("value", ["False", 0, 1.0, None])
+def test_flags_must_be_booleans(name: str, value: object) -> None:
+    with pytest.raises(TypeError, match=f"{name}={value!r} must be True or False"):
+        vbi.simulate(*small(), **{name: value})
+    with pytest.raises(TypeError, match=f"crossing 1: {name}={value!r}"):
+        vbi.simulate_many(*small(), **{name: [True, value]})
+
+
+@pytest.mark.parametrize(
+    ("dt", "error"),
+    [(0.0, ValueError), (-1.0, ValueError), (float("nan"), ValueError), ("0.01", TypeError)],
+)
+def test_a_bad_step_is_refused_in_both_entry_points(dt: object, error: type) -> None:
+    with pytest.raises(error, match="dt="):
+        vbi.simulate(*small(), dt=dt)
+    with pytest.raises(error, match="dt="):
+        vbi.simulate_many(*small(), dt=dt)
+
+
+@MODELS
+def test_results_export_their_histories(options: dict) -> None:
+    display.set_units("US")
+    try:
+        crossing = vbi.simulate(*small(), **options)
+        table = crossing.to_dataframe()
+        assert len(table) == crossing.time.size
+        position = table["position from bridge start [ft]"].to_numpy()
+        np.testing.assert_allclose(position * 0.3048, crossing.position - crossing.bridge_start)
+        deflection = table["midspan displacement, span 2 [in]"].to_numpy()
+        np.testing.assert_allclose(deflection * 0.0254, crossing.midspan_displacement[:, 1])
+        batch = vbi.simulate_many(*small()[:3], [10.0, 20.0], 5.0, **options).to_dataframe()
+        np.testing.assert_allclose(batch["speed [mph]"] * 0.44704, [10.0, 20.0])
+        assert not batch["lost contact"].any()
+    finally:
+        display.set_units("SI")
+
+
+@pytest.mark.parametrize("kind", ["displacement", "deflection", "contact", "vehicle"])
+def test_results_plot_themselves_with_units(kind: str) -> None:
+    import matplotlib.pyplot as plt
+
+    crossing = vbi.simulate(*small())
+    ax = crossing.plot(kind=kind)
+    assert ax.get_xlabel() == "wheel position from the start of the bridge [m]"
+    assert ax.get_ylabel().endswith("]") and ax.lines
+    plt.close("all")
+    with pytest.raises(ValueError, match="kind='moment'"):
+        crossing.plot(kind="moment")
+
+
+def test_batch_plot_marks_crossings_that_lost_contact() -> None:
+    import matplotlib.pyplot as plt
+
+    bridge, vehicle, road, speed, start = build_case("40ft-10Hz-one-span")
+    rough = vbi.Profile(road.x, 8 * road.elevation)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", vbi.ContactLossWarning)
+        batch = vbi.simulate_many(bridge, vehicle, [rough, flat(bridge, start)], speed, start)
+    assert batch.lost_contact.tolist() == [True, False]
+    ax = batch.plot()
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert "contact lost (outside validity)" in labels
+    assert "CONTACT LOST in 1" in repr(batch)
+    plt.close("all")
+
+
+def test_simulate_many_warns_once_for_all_crossings() -> None:
+    bridge, vehicle, road, speed, start = build_case("40ft-10Hz-one-span")
+    rough = vbi.Profile(road.x, 8 * road.elevation)
+    with pytest.warns(vbi.ContactLossWarning) as caught:
+        vbi.simulate_many(bridge, vehicle, rough, [speed, 0.9 * speed], start)
+    assert len(caught) == 1 and "2 of 2 crossings lost contact" in str(caught[0].message)
