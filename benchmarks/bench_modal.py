@@ -13,7 +13,7 @@ from _timing import median_time
 
 import vbi_lib as vbi
 from vbi_lib import units as u
-from vbi_lib.modal import assessment_inputs, simulate_modal, simulate_modal_many
+from vbi_lib.study_data import assessment_inputs
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "seed-study"
 
@@ -24,7 +24,10 @@ def table_2_13_1_crossings() -> None:
     road = vbi.Profile.iso8608(650 * u.ft, 1 * u.inch, c10=300e-6, waviness=2.0, seed=1)
     for modes in (1, 5, 20, 100):
         seconds = median_time(
-            lambda m=modes: simulate_modal(bridge, truck, road, 720 * u.inch, 320 * u.ft, m), 20
+            lambda m=modes: vbi.simulate(
+                bridge, truck, road, 720 * u.inch, 320 * u.ft, model="modal", modes=m
+            ),
+            20,
         )
         print(f"one crossing, Table 2.13.1 two-span beam, {modes:3d} modes: {seconds * 1e3:.2f} ms")
 
@@ -40,7 +43,9 @@ def assessment_set(modes: int) -> tuple[float, int]:
     bridges, trucks, roads = assessment_inputs(table, profiles, beam="exact")
 
     def run() -> None:
-        simulate_modal_many(bridges, trucks, roads, 720 * u.inch, 3840 * u.inch, modes)
+        vbi.simulate_many(
+            bridges, trucks, roads, 720 * u.inch, 3840 * u.inch, model="modal", modes=modes
+        )
 
     return median_time(run, 5), len(table)
 
