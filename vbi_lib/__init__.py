@@ -12,15 +12,8 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 from . import amplification, monitoring, roughness, studies, units
 from .bridges import Bridge, shape_function_error
 from .modal import ModalCrossing, beam_modes, reference_beam, simulate_modal, simulate_modal_many
-from .profiles import (
-    ErdFile,
-    Profile,
-    ProfileFileError,
-    iso8608_class,
-    max_sample_spacing,
-    read_erd,
-    read_profile,
-)
+from .profile_files import ErdFile, ProfileFileError, read_erd, read_profile
+from .profiles import Profile, iso8608_class, max_sample_spacing
 from .roughness import contact_force_amplification, fit_iso8608, iri, profile_spectrum
 from .simulation import BatchResult, Crossing, simulate, simulate_many, state_matrices
 from .vehicles import Vehicle
