@@ -54,24 +54,24 @@ def test_reference_transfer_function_gives_the_issue_numbers() -> None:
 @pytest.mark.parametrize("wavelength", [1.0, 2.0, 5.0, 10.0, 20.0, 40.0])
 def test_iri_of_a_long_sine_matches_the_steady_state_closed_form(wavelength: float) -> None:
     road = vbi.Profile.harmonic(3000.0, 0.025, wavelength=wavelength, amplitude=1e-3)
-    assert vbi.iri(road) == pytest.approx(golden_car_iri_of_sine(1e-3, wavelength), rel=0.01)
+    assert vbi.iri(road).iri == pytest.approx(golden_car_iri_of_sine(1e-3, wavelength), rel=0.01)
 
 
 def test_a_straight_grade_has_zero_iri() -> None:
     grade = vbi.Profile.ramp(500.0, 0.025, position=0.0, rise=10.0, run=500.0)
-    assert abs(vbi.iri(grade)) < 1e-9
+    assert abs(vbi.iri(grade).iri) < 1e-9
 
 
 def test_iri_is_linear_in_amplitude() -> None:
     road = vbi.Profile.iso8608(400.0, 0.05, c10=100e-6, seed=3)
     double = vbi.Profile(road.x, 2.5 * road.elevation)
-    assert vbi.iri(double) == pytest.approx(2.5 * vbi.iri(road), rel=1e-10)
+    assert vbi.iri(double).iri == pytest.approx(2.5 * vbi.iri(road).iri, rel=1e-10)
 
 
 def test_iri_of_the_published_two_channel_run(shared_data: Path) -> None:
     """The ERD header states IRILWP 183 and IRIRWP 163 in/mi."""
     erd = vbi.read_erd(shared_data / "profiles" / "basic-2channel.erd")
-    left, right = (vbi.iri(channel) * vbi.roughness.IN_PER_MI for channel in erd)
+    left, right = (vbi.iri(channel).iri * vbi.roughness.IN_PER_MI for channel in erd)
     assert round(left) == int(erd.header["IRILWP"]) == 183
     assert round(right) == int(erd.header["IRIRWP"]) == 163
 
@@ -87,7 +87,7 @@ def test_iri_of_a_random_iso_road_with_w_2() -> None:
     variance = integrate.quad(psd_of_stroke_rate, 0.011, 2.83, limit=200, points=[0.1, 1.0])[0]
     expected = np.sqrt(2 / np.pi) * np.sqrt(variance) * 1000
     assert expected / np.sqrt(c10 / 1e-6) == pytest.approx(0.543, abs=0.002)
-    values = [vbi.iri(vbi.Profile.iso8608(3000.0, 0.025, c10=c10, seed=s)) for s in range(4)]
+    values = [vbi.iri(vbi.Profile.iso8608(3000.0, 0.025, c10=c10, seed=s)).iri for s in range(4)]
     assert np.mean(values) == pytest.approx(expected, rel=0.02)
 
 
@@ -97,11 +97,13 @@ def test_segment_iri_carries_the_state_and_averages_to_the_whole() -> None:
     assert len(per_segment) == 13  # 12 full segments and one of 80 m
     assert per_segment.stop[-1] == pytest.approx(2000.0)
     # with the state carried there is no restart transient: every segment is steady state
-    np.testing.assert_allclose(per_segment.iri, golden_car_iri_of_sine(1e-3, 5.0), rtol=0.01)
-    assert per_segment.whole == pytest.approx(vbi.iri(road))
+    np.testing.assert_allclose(
+        per_segment.segment_iri, golden_car_iri_of_sine(1e-3, 5.0), rtol=0.01
+    )
+    assert per_segment.iri == pytest.approx(vbi.iri(road).iri)
     lengths = per_segment.stop - per_segment.start
-    weighted = np.sum(per_segment.iri * lengths) / np.sum(lengths)
-    assert weighted == pytest.approx(per_segment.whole, rel=2e-3)
+    weighted = np.sum(per_segment.segment_iri * lengths) / np.sum(lengths)
+    assert weighted == pytest.approx(per_segment.iri, rel=2e-3)
 
 
 def test_segment_iri_sees_a_rough_patch_where_it_is() -> None:
@@ -110,9 +112,38 @@ def test_segment_iri_sees_a_rough_patch_where_it_is() -> None:
     patch = (x > 40) & (x < 60)
     flat[patch] = 0.002 * np.sin(2 * np.pi * (x[patch] - 40) / 2.0)
     per_segment = vbi.iri(vbi.Profile(x, flat), segment_length=20.0)
-    assert per_segment.iri[0] == pytest.approx(0.0, abs=1e-12)
-    assert per_segment.iri[2] > 3.0
-    assert per_segment.iri[2] > 5 * max(per_segment.iri[1], per_segment.iri[4])
+    values = per_segment.segment_iri
+    assert values[0] == pytest.approx(0.0, abs=1e-12)
+    assert values[2] > 3.0
+    assert values[2] > 5 * max(values[1], values[4])
+
+
+def test_iri_returns_one_kind_of_result_whatever_is_asked() -> None:
+    """Without a segment length: one segment, the whole road, holding the whole-road value."""
+    road = vbi.Profile.harmonic(600.0, 0.025, wavelength=8.0, amplitude=1e-3)
+    whole = vbi.iri(road)
+    split = vbi.iri(road, segment_length=200.0)
+    assert type(whole) is type(split) is vbi.roughness.IriResult
+    assert len(whole) == 1 and whole.segment_length is None
+    assert whole.segment_iri[0] == whole.iri == split.iri
+    assert (whole.start[0], whole.stop[0]) == (0.0, pytest.approx(600.0))
+    # the steady-state closed form, whichever way the value is read
+    assert whole.iri == pytest.approx(golden_car_iri_of_sine(1e-3, 8.0), rel=0.01)
+    table = split.to_dataframe()
+    assert list(table.columns) == ["start_m", "stop_m", "iri_m_per_km"]
+    assert table.index.name == "segment" and len(table) == 3
+    np.testing.assert_allclose(table["stop_m"] - table["start_m"], 200.0)
+    assert "3 segments of 200 m" in repr(split) and "IRI" in repr(whole)
+    assert split.valid.all()
+
+
+def test_a_segment_without_a_slope_step_is_flagged_not_hidden() -> None:
+    """A last segment shorter than the 250 mm base holds no step: NaN, and valid says so."""
+    road = vbi.Profile.harmonic(100.1, 0.025, wavelength=8.0, amplitude=1e-3)
+    result = vbi.iri(road, segment_length=50.0)
+    assert len(result) == 3
+    assert result.valid.tolist() == [True, True, False]
+    assert np.isnan(result.segment_iri[2]) and np.isfinite(result.iri)
 
 
 def test_iri_rejects_too_short_and_bad_segments() -> None:

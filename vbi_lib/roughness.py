@@ -259,31 +259,99 @@ def _iri_kernel(slope, st, pr, state, stroke):
 
 
 @dataclass(frozen=True, eq=False)
-class IriSegments:
-    """IRI of consecutive segments of a profile [m/km] (the car's state carried across).
+class IriResult:
+    """The IRI of a profile: the whole road and consecutive segments of it (m/km).
 
-    ``start`` and ``stop`` [m] bound each segment (the last may be shorter); ``iri`` [m/km];
-    ``whole`` is the IRI of the whole profile.
+    Whatever :func:`iri` is asked, it returns this: ``result.iri`` is the whole-road IRI
+    [m/km] (the one number to quote), and the segments hold the IRI of each consecutive piece
+    of ``segment_length`` metres (one segment covering the road when no length was asked).
+
+    Attributes
+    ----------
+    iri
+        IRI of the whole profile [m/km] (multiply by :data:`IN_PER_MI` for in/mi).
+    start, stop
+        Stations bounding each segment [m], shape ``(n_segments,)``; the last segment may be
+        shorter than ``segment_length``.
+    segment_iri
+        IRI of each segment [m/km], shape ``(n_segments,)``; NaN only for a segment shorter
+        than one sample interval, which holds no slope step (``valid`` is then False).
+    segment_length
+        Length asked for [m], or ``None`` (one segment: the whole road).
+    name
+        Name of the profile.
+
+    Examples
+    --------
+    >>> road = Profile.harmonic(1000.0, 0.025, wavelength=10.0, amplitude=0.001, phase=0.3)
+    >>> result = iri(road, segment_length=400.0)
+    >>> result
+    IriResult('harmonic 10 m', 1000 m: IRI 0.50 m/km; 3 segments of 400 m: 0.50, 0.50, 0.50)
+    >>> round(result.iri, 3), len(result)
+    (0.503, 3)
+    >>> result.to_dataframe().round(2)  # doctest: +NORMALIZE_WHITESPACE
+             start_m  stop_m  iri_m_per_km
+    segment
+    0            0.0   400.0           0.5
+    1          400.0   800.0           0.5
+    2          800.0  1000.0           0.5
     """
 
+    iri: float
     start: np.ndarray
     stop: np.ndarray
-    iri: np.ndarray
-    whole: float
+    segment_iri: np.ndarray
+    segment_length: float | None = None
+    name: str = ""
+
+    @property
+    def valid(self) -> np.ndarray:
+        """``True`` for each segment with at least one slope step (a finite IRI)."""
+        return np.isfinite(self.segment_iri)
 
     def __len__(self) -> int:
-        return self.iri.size
+        return int(self.segment_iri.size)
+
+    def to_dataframe(self):  # noqa: ANN201
+        """One row per segment: ``start_m``, ``stop_m``, ``iri_m_per_km`` (index ``segment``)."""
+        import pandas as pd
+
+        table = pd.DataFrame(
+            {"start_m": self.start, "stop_m": self.stop, "iri_m_per_km": self.segment_iri}
+        )
+        return table.rename_axis("segment")
+
+    def plot(self, ax=None, label: str | None = None):  # noqa: ANN001, ANN201
+        """Segment IRI as steps along the road, with the whole-road value dashed."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(6, 3))
+        edges = np.append(self.start, self.stop[-1])
+        values = np.append(self.segment_iri, self.segment_iri[-1])
+        (line,) = ax.step(edges, values, where="post", label=label or self.name or "segments")
+        ax.axhline(
+            self.iri, color=line.get_color(), ls="--", lw=1, label=f"whole {self.iri:.2f} m/km"
+        )
+        ax.set_xlabel("station [m]")
+        ax.set_ylabel("IRI [m/km]")
+        ax.legend(loc="best", fontsize="small")
+        return ax
 
     def __repr__(self) -> str:
-        shown = ", ".join(f"{v:.2f}" for v in self.iri[:6])
-        more = ", ..." if self.iri.size > 6 else ""
+        label = f"{self.name!r}, " if self.name else ""
+        length = self.stop[-1] - self.start[0]
+        head = f"IriResult({label}{length:.0f} m: IRI {self.iri:.2f} m/km"
+        if self.segment_length is None:
+            return head + ")"
+        shown = ", ".join(f"{v:.2f}" for v in self.segment_iri[:6])
+        more = ", ..." if self.segment_iri.size > 6 else ""
         return (
-            f"IriSegments({self.iri.size} segments of {self.stop[0] - self.start[0]:g} m: "
-            f"[{shown}{more}] m/km; whole {self.whole:.2f} m/km)"
+            f"{head}; {self.segment_iri.size} segments of {self.segment_length:g} m: {shown}{more})"
         )
 
 
-def iri(profile: Profile, segment_length: float | None = None) -> float | IriSegments:
+def iri(profile: Profile, segment_length: float | None = None) -> IriResult:
     """International Roughness Index of a profile [m/km] (Sayers 1995, ASTM E1926).
 
     The golden quarter car at 80 km/h over the profile smoothed by a 250 mm moving average,
@@ -296,27 +364,37 @@ def iri(profile: Profile, segment_length: float | None = None) -> float | IriSeg
     profile
         The road (stations and elevations in metres); sample at 250 mm or finer.
     segment_length
-        ``None`` for one value over the whole profile; otherwise the IRI of each consecutive
-        segment of this length [m] from the first station (one run, the car's state carried
-        from segment to segment; each slope step is assigned to the segment holding the
-        middle of its 250 mm base).
+        ``None`` for one segment covering the whole profile; otherwise consecutive segments
+        of this length [m] from the first station (one run, the car's state carried from
+        segment to segment; each slope step is assigned to the segment holding the middle of
+        its 250 mm base).
 
     Returns
     -------
-    float or IriSegments
-        IRI in m/km (multiply by 63.36 for in/mi).
+    IriResult
+        ``result.iri`` the whole-road IRI [m/km] (multiply by 63.36 for in/mi);
+        ``result.segment_iri`` the IRI of each segment.
+
+    Raises
+    ------
+    ValueError
+        A profile shorter than the 250 mm moving average, or ``segment_length`` not positive.
 
     Examples
     --------
     A 1 mm sine of wavelength 10 m (the steady-state value is 0.503 m/km):
 
     >>> road = Profile.harmonic(2000.0, 0.025, wavelength=10.0, amplitude=0.001)
-    >>> round(iri(road), 3)
+    >>> round(iri(road).iri, 3)
     0.503
-    >>> iri(road, segment_length=500.0)
-    IriSegments(4 segments of 500 m: [0.50, 0.50, 0.50, 0.50] m/km; whole 0.50 m/km)
+    >>> iri(road, segment_length=800.0)
+    IriResult('harmonic 10 m', 2000 m: IRI 0.50 m/km; 3 segments of 800 m: 0.50, 0.50, 0.50)
+    >>> iri(road)
+    IriResult('harmonic 10 m', 2000 m: IRI 0.50 m/km)
     """
     profile = _uniform(profile)
+    if segment_length is not None:
+        segment_length = check.positive("segment_length", segment_length)
     dx = profile.spacing
     y = profile.elevation
     base = max(1, int(round(IRI_BASE / dx)))
@@ -332,9 +410,9 @@ def iri(profile: Profile, segment_length: float | None = None) -> float | IriSeg
     stroke = np.empty(slope.size)
     _iri_kernel(slope, st, pr, np.array([initial, 0.0, initial, 0.0]), stroke)
     whole = float(stroke.mean() * 1000.0)
-    if segment_length is None:
-        return whole
-    segment_length = check.positive("segment_length", segment_length)
+    if segment_length is None:  # one segment: the whole road
+        start, stop, values = np.array([profile.start]), np.array([profile.end]), np.array([whole])
+        return IriResult(whole, start, stop, values, None, profile.name)
     centre = profile.x[: slope.size] + 0.5 * base * dx
     count = max(1, math.ceil(profile.length / segment_length - 1e-9))
     index = np.minimum(((centre - profile.start) // segment_length).astype(np.int64), count - 1)
@@ -344,7 +422,7 @@ def iri(profile: Profile, segment_length: float | None = None) -> float | IriSeg
     values[steps > 0] = sums[steps > 0] / steps[steps > 0] * 1000.0
     start = profile.start + segment_length * np.arange(count)
     stop = np.minimum(start + segment_length, profile.end)
-    return IriSegments(start, stop, values, whole)
+    return IriResult(whole, start, stop, values, segment_length, profile.name)
 
 
 def _golden_transition(dt: float) -> tuple[np.ndarray, np.ndarray]:
@@ -545,7 +623,7 @@ __all__ = [
     "IN_PER_MI",
     "ContactForceAmplification",
     "Iso8608Fit",
-    "IriSegments",
+    "IriResult",
     "ProfileSpectrum",
     "contact_force_amplification",
     "fit_iso8608",
