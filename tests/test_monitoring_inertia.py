@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from vbi_lib import monitoring as mon
+from vbi_lib.closed_forms import point_load_statics
 
 
 def test_first_mode_coefficients_are_the_closed_forms() -> None:
@@ -35,27 +36,19 @@ def test_mode_n_ratio(n: int) -> None:
 def _midspan_by_superposition(n: int, span: float = 7.0) -> tuple[float, float]:
     """Midspan deflection x EI and moment of a simply supported beam under sin(n pi x / L).
 
-    Integrates the point-load influence lines (deflection a (3L^2 - 4a^2) / 48 for a load at
-    a <= L/2, moment a / 2), an independent route to the inertia terms of (20), (22).
+    Integrates the midspan influence lines of a point load (closed_forms.point_load_statics,
+    itself checked against a beam finite-element model), an independent route to the inertia
+    terms of (20), (22).
     """
-
-    def load(x: float) -> float:
-        return math.sin(n * math.pi * x / span)
-
-    def deflection_line(a: float) -> float:
-        b = min(a, span - a)
-        return b * (3 * span**2 - 4 * b**2) / 48.0
-
-    def moment_line(a: float) -> float:
-        return min(a, span - a) / 2.0
-
-    # Gauss-Legendre on each half (smooth there): exact to rounding for these integrands
+    # Gauss-Legendre on each half (the influence lines are smooth there): exact to rounding
     nodes, weights = np.polynomial.legendre.leggauss(40)
     w = m = 0.0
     for lo, hi in ((0.0, span / 2), (span / 2, span)):
-        for a, c in zip(lo + (hi - lo) * (nodes + 1) / 2, weights * (hi - lo) / 2, strict=True):
-            w += c * load(a) * deflection_line(a)
-            m += c * load(a) * moment_line(a)
+        a = lo + (hi - lo) * (nodes + 1) / 2
+        c = weights * (hi - lo) / 2 * np.sin(n * math.pi * a / span)
+        lines = point_load_statics(span / 2, a, span, EI=1.0)
+        w += float(c @ lines.deflection)
+        m += float(c @ lines.moment)
     return w, m
 
 
@@ -64,8 +57,9 @@ def test_inertia_terms_match_beam_statics(n: int) -> None:
     span, beam_mass, acceleration, force = 7.0, 1.0, 1.0, 1.0
     w_unit, m_unit = _midspan_by_superposition(n, span)
     q = beam_mass * acceleration / span  # load amplitude (24)
-    w_point = force * span**3 / 48.0  # (19) times EI
-    m_point = force * span / 4.0  # (21) over c / I
+    midspan = point_load_statics(span / 2, span / 2, span, EI=1.0, force=force)
+    w_point = float(midspan.deflection)  # (19) times EI: P L^3 / 48
+    m_point = float(midspan.moment)  # (21) over c / I: P L / 4
     r = mon.inertia_ratio(beam_mass, acceleration, force)
     assert float(mon.displacement_daf(0.0, r, modes=n)) == pytest.approx(
         q * w_unit / w_point, rel=1e-9, abs=1e-12

@@ -7,7 +7,8 @@ References, all independent of the stepping code under test:
 - the random-process IRI of a white-slope road (ISO 8608, w = 2) integrated from the same
   transfer function;
 - the spectrum the ISO road was generated with;
-- the steady-state base-excitation response of a sprung mass, and ``vbi.simulate`` with
+- the steady-state base-excitation response of a sprung mass (vbi_lib.closed_forms, itself
+  checked against a numerical integration), and ``vbi.simulate`` with
   ``coupled=False`` (a different integrator, RK4) for the rigid-road contact force.
 """
 
@@ -21,6 +22,7 @@ from scipy import integrate
 
 import vbi_lib as vbi
 from vbi_lib import units as u
+from vbi_lib.closed_forms import contact_force_transmissibility
 from vbi_lib.roughness import contact_force_amplification, quarter_car_contact_force
 
 K1, K2, C, MU = 653.0, 63.3, 6.0, 0.15
@@ -199,17 +201,16 @@ def test_rigid_road_contact_force_matches_the_decoupled_simulation() -> None:
 
 
 def test_contact_force_on_a_long_sine_is_the_steady_state_closed_form() -> None:
-    """Base excitation: |F| = m w^2 |U|, |U/Y| = |k + i c w| / |k - m w^2 + i c w|."""
+    """Base excitation: |F| = k Y r^2 T_d (closed_forms.contact_force_transmissibility)."""
     wavelength, amplitude = 30 * u.ft, 5e-3
     road = vbi.Profile.harmonic(400.0, 0.02, wavelength=wavelength, amplitude=amplitude)
     _, after, before = quarter_car_contact_force(road, TRUCK, SPEED)
     # the sampled road is piecewise linear, so the force jumps by c * (change of slope) at
     # each sample; the mean of the two sides is the force of the smooth sine to O(h^2)
     force = 0.5 * (after + before)
-    m, k, c = TRUCK.mass, TRUCK.stiffness, TRUCK.damping
-    w = 2 * np.pi * SPEED / wavelength
-    transmissibility = abs(k + 1j * c * w) / abs(k - m * w**2 + 1j * c * w)
-    expected = m * w**2 * transmissibility * amplitude
+    ratio = SPEED / wavelength / TRUCK.frequency_hz
+    force_ratio = contact_force_transmissibility(ratio, TRUCK.damping_ratio)
+    expected = TRUCK.stiffness * amplitude * force_ratio
     late = road.x > 200.0
     assert np.abs(force[late]).max() == pytest.approx(expected, rel=1e-4)
     assert np.abs(after[late]).max() == pytest.approx(expected, rel=3e-3)

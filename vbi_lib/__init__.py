@@ -9,7 +9,7 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 3.99
 """
 
-from . import amplification, monitoring, roughness, studies, units
+from . import amplification, closed_forms, monitoring, roughness, studies, units
 from .bridges import Bridge, shape_function_error
 from .modal import ModalCrossing, beam_modes, reference_beam, simulate_modal, simulate_modal_many
 from .profile_files import ErdFile, ProfileFileError, read_erd, read_profile
@@ -24,6 +24,7 @@ __all__ = [
     "Crossing",
     "ModalCrossing",
     "beam_modes",
+    "closed_forms",
     "reference_beam",
     "simulate_modal",
     "simulate_modal_many",
