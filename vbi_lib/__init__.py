@@ -10,8 +10,8 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 """
 
 from . import amplification, closed_forms, monitoring, roughness, studies, units
-from .bridges import Bridge, shape_function_error
-from .modal import ModalCrossing, beam_modes, reference_beam, simulate_modal, simulate_modal_many
+from .bridges import Bridge, reference_beam, shape_function_error
+from .modal import ModalCrossing, beam_modes, simulate_modal, simulate_modal_many
 from .profile_files import ErdFile, ProfileFileError, read_erd, read_profile
 from .profiles import Profile, iso8608_class, max_sample_spacing
 from .roughness import contact_force_amplification, fit_iso8608, iri, profile_spectrum

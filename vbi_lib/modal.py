@@ -68,7 +68,7 @@ import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from . import _validation as check
-from .bridges import Bridge, mass_per_length_for
+from .bridges import Bridge, reference_beam
 from .profiles import Profile
 from .simulation import BatchResult, _broadcast, _check_inputs, _CrossingViews, _grid
 from .units import g as GRAVITY
@@ -310,52 +310,6 @@ def beam_modes(bridge: Bridge, modes: int) -> BeamModes:
     for array in (result.kind, result.wavenumber, result.amplitude, result.omega):
         array.setflags(write=False)
     return result
-
-
-def reference_beam(
-    span: float,
-    n_spans: int,
-    k_mid: float,
-    first_frequency_hz: float,
-    damping_ratio: float = 0.01,
-) -> Bridge:
-    """The uniform beam whose exact midspan stiffness and first frequency are the bridge's.
-
-    The study's rule (82)-(83) makes the *one-coordinate* model's midspan stiffness equal
-    ``K_mid``; for two spans that beam is 31 % too flexible as a real beam (65).  For the
-    many-mode model the exact beam formulas are the consistent choice:
-    ``EI = K_mid L^3 / 48`` for one span (38) and ``EI = 23 K_mid L^3 / 1536`` for two (64),
-    and the mass per length ``pi^4 EI / ((2 pi f_1)^2 L^4)`` keeps the first frequency (84).
-    For one span this is the study's beam.
-
-    Parameters
-    ----------
-    span
-        Span length [m].
-    n_spans
-        1 or 2.
-    k_mid
-        Midspan stiffness of the path, load / deflection with the load at midspan [N/m].
-    first_frequency_hz
-        First natural frequency [Hz].
-    damping_ratio
-        Modal damping ratio, default 1 %.
-
-    Examples
-    --------
-    Table 2.13.8, row 3 (40 ft, two spans, 9.98 Hz): EI 1.459 times the study's 8.186e11.
-
-    >>> from vbi_lib import units as u
-    >>> b = reference_beam(40 * u.ft, 2, 721006 * u.lbf / u.inch, 9.98)
-    >>> f"{b.EI / (u.lbf * u.inch**2):.4e}"
-    '1.1940e+12'
-    """
-    span = check.positive("span", span)
-    n_spans = check.n_spans(n_spans)
-    k_mid = check.positive("k_mid", k_mid)
-    frequency = check.positive("first_frequency_hz", first_frequency_hz)
-    EI = k_mid * span**3 * (1.0 / 48.0 if n_spans == 1 else 23.0 / 1536.0)
-    return Bridge(span, n_spans, EI, mass_per_length_for(EI, span, frequency), damping_ratio)
 
 
 def static_deflection_line(
