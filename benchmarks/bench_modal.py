@@ -8,12 +8,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 from _timing import median_time
 
 import vbi_lib as vbi
+from vbi_lib import study_data as sd
 from vbi_lib import units as u
-from vbi_lib.modal import assessment_inputs, simulate_modal, simulate_modal_many
+from vbi_lib.modal import simulate_modal, simulate_modal_many
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "seed-study"
 
@@ -30,17 +30,12 @@ def table_2_13_1_crossings() -> None:
 
 
 def assessment_set(modes: int) -> tuple[float, int]:
-    import pandas as pd
-
-    table = pd.read_csv(DATA / "scenarios-239.csv")
-    profiles = {}
-    for name in table.profile.unique():
-        data = np.loadtxt(DATA / "profiles" / name, delimiter=",")
-        profiles[name] = vbi.Profile(data[:, 0] * u.inch, (data[:, 1] - data[0, 1]) * u.inch)
-    bridges, trucks, roads = assessment_inputs(table, profiles, beam="exact")
+    table, profiles = sd.read_assessment_set(DATA)
+    bridges, trucks, roads = sd.assessment_inputs(table, profiles, beam="exact")
+    speed, start = sd.ASSESSMENT_SPEED, sd.ASSESSMENT_BRIDGE_START
 
     def run() -> None:
-        simulate_modal_many(bridges, trucks, roads, 720 * u.inch, 3840 * u.inch, modes)
+        simulate_modal_many(bridges, trucks, roads, speed, start, modes)
 
     return median_time(run, 5), len(table)
 

@@ -40,7 +40,7 @@ def main() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         t = median_time(lambda: mon.daf_from_record(events, FS, speed=25.0, span=30.0), 3)
-    print(f"1000 events (2-D array) -> DataFrame        {t:8.3f} s  ({t:.2f} ms per event)")
+    print(f"1000 events (2-D array) -> RecordDAFs       {t:8.3f} s  ({t:.2f} ms per event)")
 
     line = np.sin(np.pi * np.linspace(0, 1, 2000))
     static = {f"G{g}": line for g in range(10)}

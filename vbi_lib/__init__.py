@@ -9,7 +9,7 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 3.99
 """
 
-from . import amplification, closed_forms, monitoring, roughness, studies, units
+from . import amplification, closed_forms, monitoring, roughness, studies, study_data, units
 from .bridges import Bridge, reference_beam, shape_function_error
 from .modal import ModalCrossing, beam_modes, simulate_modal, simulate_modal_many
 from .profile_files import ErdFile, ProfileFileError, read_erd, read_profile
@@ -48,6 +48,7 @@ __all__ = [
     "simulate_many",
     "state_matrices",
     "studies",
+    "study_data",
     "units",
 ]
 
