@@ -34,8 +34,7 @@ MIN_SAMPLES_PER_CYCLE = 10
 
 @dataclass(frozen=True, eq=False)
 class RecordDAF:
-    """The DAF of one recorded event estimated by low-pass filtering (one entry of
-    :class:`RecordDAFs`).
+    """One recorded event's DAF, estimated by low-pass filtering (an entry of RecordDAFs).
 
     Attributes
     ----------
@@ -199,16 +198,22 @@ class RecordDAFs:
         return np.array([event.doubtful for event in self.events], dtype=bool)
 
     def to_dataframe(self) -> pd.DataFrame:
-        """One row per event (index ``event``): ``daf``, ``peak``, ``quasi_static_peak``,
-        ``cutoff_hz``, ``first_frequency_hz``, ``loading_frequency_hz`` (NaN when not known),
-        ``doubtful`` and ``how_chosen``."""
+        """The scalar fields of every event as a table, one row per event (index ``event``).
+
+        Columns ``daf``, ``peak``, ``quasi_static_peak``, ``cutoff_hz``,
+        ``first_frequency_hz``, ``loading_frequency_hz`` (NaN when not known), ``doubtful``
+        and ``how_chosen``.
+        """
         rows = [event.summary() for event in self.events]
         return pd.DataFrame(rows, columns=list(_SUMMARY_FIELDS)).rename_axis("event")
 
     def plot(self, ax=None, event: int | None = None, **kwargs):  # noqa: ANN001, ANN003, ANN201
-        """One event's record and quasi-static part (:meth:`RecordDAF.plot`; the only event
-        by default), or with several events and ``event=None`` the DAF of each event (doubtful
-        ones hollow)."""
+        """Plot one event's record and quasi-static part, or the DAF of every event.
+
+        With ``event=i`` (or a single event) :meth:`RecordDAF.plot` of that event (keywords
+        passed on); with several events and ``event=None`` the DAF of each event against its
+        number, doubtful ones hollow.
+        """
         import matplotlib.pyplot as plt
 
         if event is not None or len(self.events) == 1:
@@ -219,10 +224,8 @@ class RecordDAFs:
         sure = ~self.doubtful
         ax.plot(index[sure], self.daf[sure], "o", ms=4, color="C0", label="DAF")
         if (~sure).any():
-            ax.plot(
-                index[~sure], self.daf[~sure], "o", ms=4, mfc="none", color="C0",
-                label="doubtful cut-off",
-            )  # fmt: skip
+            hollow = {"mfc": "none", "color": "C0", "label": "doubtful cut-off"}
+            ax.plot(index[~sure], self.daf[~sure], "o", ms=4, **hollow)
         ax.set_xlabel("event")
         ax.set_ylabel("DAF [-]")
         ax.legend(fontsize="small", loc="best")
