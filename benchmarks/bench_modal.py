@@ -8,12 +8,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 from _timing import median_time
 
 import vbi_lib as vbi
+from vbi_lib import study_data as sd
 from vbi_lib import units as u
-from vbi_lib.study_data import assessment_inputs
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "seed-study"
 
@@ -33,19 +32,12 @@ def table_2_13_1_crossings() -> None:
 
 
 def assessment_set(modes: int) -> tuple[float, int]:
-    import pandas as pd
-
-    table = pd.read_csv(DATA / "scenarios-239.csv")
-    profiles = {}
-    for name in table.profile.unique():
-        data = np.loadtxt(DATA / "profiles" / name, delimiter=",")
-        profiles[name] = vbi.Profile(data[:, 0] * u.inch, (data[:, 1] - data[0, 1]) * u.inch)
-    bridges, trucks, roads = assessment_inputs(table, profiles, beam="exact")
+    table, profiles = sd.read_assessment_set(DATA)
+    bridges, trucks, roads = sd.assessment_inputs(table, profiles, beam="exact")
+    speed, start = sd.ASSESSMENT_SPEED, sd.ASSESSMENT_BRIDGE_START
 
     def run() -> None:
-        vbi.simulate_many(
-            bridges, trucks, roads, 720 * u.inch, 3840 * u.inch, model="modal", modes=modes
-        )
+        vbi.simulate_many(bridges, trucks, roads, speed, start, model="modal", modes=modes)
 
     return median_time(run, 5), len(table)
 

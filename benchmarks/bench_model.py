@@ -12,6 +12,7 @@ import numpy as np
 from _timing import median_time
 
 import vbi_lib as vbi
+from vbi_lib import study_data as sd
 from vbi_lib import units as u
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "seed-study"
@@ -28,31 +29,11 @@ def table_2_13_1_crossing() -> float:
 
 
 def assessment_set() -> tuple[float, int]:
-    import pandas as pd
-
-    table = pd.read_csv(DATA / "scenarios-239.csv")
-    profiles = {}
-    for name in table.profile.unique():
-        data = np.loadtxt(DATA / "profiles" / name, delimiter=",")
-        profiles[name] = vbi.Profile(data[:, 0] * u.inch, (data[:, 1] - data[0, 1]) * u.inch)
-    bridges = [
-        vbi.Bridge.from_midspan_stiffness(
-            r.span_ft * u.ft, int(r.n_spans), r.k_mid_lbf_per_in * u.lbf / u.inch, r.bridge_f1_hz
-        )
-        for r in table.itertuples()
-    ]
-    vehicles = [
-        vbi.Vehicle(
-            r.vehicle_mass_slinch * u.slinch,
-            r.vehicle_k_lbf_per_in * u.lbf / u.inch,
-            r.vehicle_c_lbf_s_per_in * u.lbf / u.inch,
-        )
-        for r in table.itertuples()
-    ]
-    roads = [profiles[name] for name in table.profile]
+    table, profiles = sd.read_assessment_set(DATA)
+    bridges, vehicles, roads = sd.assessment_inputs(table, profiles, beam="study")
 
     def run() -> None:
-        vbi.simulate_many(bridges, vehicles, roads, 720 * u.inch, 3840 * u.inch)
+        vbi.simulate_many(bridges, vehicles, roads, sd.ASSESSMENT_SPEED, sd.ASSESSMENT_BRIDGE_START)
 
     return median_time(run, 5), len(table)
 

@@ -7,7 +7,8 @@ References, all independent of the stepping code under test:
 - the random-process IRI of a white-slope road (ISO 8608, w = 2) integrated from the same
   transfer function;
 - the spectrum the ISO road was generated with;
-- the steady-state base-excitation response of a sprung mass, and ``vbi.simulate`` with
+- the steady-state base-excitation response of a sprung mass (vbi_lib.closed_forms, itself
+  checked against a numerical integration), and ``vbi.simulate`` with
   ``coupled=False`` (a different integrator, RK4) for the rigid-road contact force.
 """
 
@@ -20,8 +21,6 @@ import pytest
 from scipy import integrate
 
 import vbi_lib as vbi
-from vbi_lib import units as u
-from vbi_lib.roughness import contact_force_amplification, quarter_car_contact_force
 
 K1, K2, C, MU = 653.0, 63.3, 6.0, 0.15
 V = 80 / 3.6
@@ -54,24 +53,24 @@ def test_reference_transfer_function_gives_the_issue_numbers() -> None:
 @pytest.mark.parametrize("wavelength", [1.0, 2.0, 5.0, 10.0, 20.0, 40.0])
 def test_iri_of_a_long_sine_matches_the_steady_state_closed_form(wavelength: float) -> None:
     road = vbi.Profile.harmonic(3000.0, 0.025, wavelength=wavelength, amplitude=1e-3)
-    assert vbi.iri(road) == pytest.approx(golden_car_iri_of_sine(1e-3, wavelength), rel=0.01)
+    assert vbi.iri(road).iri == pytest.approx(golden_car_iri_of_sine(1e-3, wavelength), rel=0.01)
 
 
 def test_a_straight_grade_has_zero_iri() -> None:
     grade = vbi.Profile.ramp(500.0, 0.025, position=0.0, rise=10.0, run=500.0)
-    assert abs(vbi.iri(grade)) < 1e-9
+    assert abs(vbi.iri(grade).iri) < 1e-9
 
 
 def test_iri_is_linear_in_amplitude() -> None:
     road = vbi.Profile.iso8608(400.0, 0.05, c10=100e-6, seed=3)
     double = vbi.Profile(road.x, 2.5 * road.elevation)
-    assert vbi.iri(double) == pytest.approx(2.5 * vbi.iri(road), rel=1e-10)
+    assert vbi.iri(double).iri == pytest.approx(2.5 * vbi.iri(road).iri, rel=1e-10)
 
 
 def test_iri_of_the_published_two_channel_run(shared_data: Path) -> None:
     """The ERD header states IRILWP 183 and IRIRWP 163 in/mi."""
     erd = vbi.read_erd(shared_data / "profiles" / "basic-2channel.erd")
-    left, right = (vbi.iri(channel) * vbi.roughness.IN_PER_MI for channel in erd)
+    left, right = (vbi.iri(channel).iri * vbi.roughness.IN_PER_MI for channel in erd)
     assert round(left) == int(erd.header["IRILWP"]) == 183
     assert round(right) == int(erd.header["IRIRWP"]) == 163
 
@@ -87,7 +86,7 @@ def test_iri_of_a_random_iso_road_with_w_2() -> None:
     variance = integrate.quad(psd_of_stroke_rate, 0.011, 2.83, limit=200, points=[0.1, 1.0])[0]
     expected = np.sqrt(2 / np.pi) * np.sqrt(variance) * 1000
     assert expected / np.sqrt(c10 / 1e-6) == pytest.approx(0.543, abs=0.002)
-    values = [vbi.iri(vbi.Profile.iso8608(3000.0, 0.025, c10=c10, seed=s)) for s in range(4)]
+    values = [vbi.iri(vbi.Profile.iso8608(3000.0, 0.025, c10=c10, seed=s)).iri for s in range(4)]
     assert np.mean(values) == pytest.approx(expected, rel=0.02)
 
 
@@ -97,11 +96,13 @@ def test_segment_iri_carries_the_state_and_averages_to_the_whole() -> None:
     assert len(per_segment) == 13  # 12 full segments and one of 80 m
     assert per_segment.stop[-1] == pytest.approx(2000.0)
     # with the state carried there is no restart transient: every segment is steady state
-    np.testing.assert_allclose(per_segment.iri, golden_car_iri_of_sine(1e-3, 5.0), rtol=0.01)
-    assert per_segment.whole == pytest.approx(vbi.iri(road))
+    np.testing.assert_allclose(
+        per_segment.segment_iri, golden_car_iri_of_sine(1e-3, 5.0), rtol=0.01
+    )
+    assert per_segment.iri == pytest.approx(vbi.iri(road).iri)
     lengths = per_segment.stop - per_segment.start
-    weighted = np.sum(per_segment.iri * lengths) / np.sum(lengths)
-    assert weighted == pytest.approx(per_segment.whole, rel=2e-3)
+    weighted = np.sum(per_segment.segment_iri * lengths) / np.sum(lengths)
+    assert weighted == pytest.approx(per_segment.iri, rel=2e-3)
 
 
 def test_segment_iri_sees_a_rough_patch_where_it_is() -> None:
@@ -110,9 +111,38 @@ def test_segment_iri_sees_a_rough_patch_where_it_is() -> None:
     patch = (x > 40) & (x < 60)
     flat[patch] = 0.002 * np.sin(2 * np.pi * (x[patch] - 40) / 2.0)
     per_segment = vbi.iri(vbi.Profile(x, flat), segment_length=20.0)
-    assert per_segment.iri[0] == pytest.approx(0.0, abs=1e-12)
-    assert per_segment.iri[2] > 3.0
-    assert per_segment.iri[2] > 5 * max(per_segment.iri[1], per_segment.iri[4])
+    values = per_segment.segment_iri
+    assert values[0] == pytest.approx(0.0, abs=1e-12)
+    assert values[2] > 3.0
+    assert values[2] > 5 * max(values[1], values[4])
+
+
+def test_iri_returns_one_kind_of_result_whatever_is_asked() -> None:
+    """Without a segment length: one segment, the whole road, holding the whole-road value."""
+    road = vbi.Profile.harmonic(600.0, 0.025, wavelength=8.0, amplitude=1e-3)
+    whole = vbi.iri(road)
+    split = vbi.iri(road, segment_length=200.0)
+    assert type(whole) is type(split) is vbi.roughness.IriResult
+    assert len(whole) == 1 and whole.segment_length is None
+    assert whole.segment_iri[0] == whole.iri == split.iri
+    assert (whole.start[0], whole.stop[0]) == (0.0, pytest.approx(600.0))
+    # the steady-state closed form, whichever way the value is read
+    assert whole.iri == pytest.approx(golden_car_iri_of_sine(1e-3, 8.0), rel=0.01)
+    table = split.to_dataframe()
+    assert list(table.columns) == ["start_m", "stop_m", "iri_m_per_km"]
+    assert table.index.name == "segment" and len(table) == 3
+    np.testing.assert_allclose(table["stop_m"] - table["start_m"], 200.0)
+    assert "3 segments of 200 m" in repr(split) and "IRI" in repr(whole)
+    assert split.valid.all()
+
+
+def test_a_segment_without_a_slope_step_is_flagged_not_hidden() -> None:
+    """A last segment shorter than the 250 mm base holds no step: NaN, and valid says so."""
+    road = vbi.Profile.harmonic(100.1, 0.025, wavelength=8.0, amplitude=1e-3)
+    result = vbi.iri(road, segment_length=50.0)
+    assert len(result) == 3
+    assert result.valid.tolist() == [True, True, False]
+    assert np.isnan(result.segment_iri[2]) and np.isfinite(result.iri)
 
 
 def test_iri_rejects_too_short_and_bad_segments() -> None:
@@ -146,80 +176,6 @@ def test_spectrum_bands_and_class() -> None:
 def test_fit_of_a_too_short_road_says_why() -> None:
     with pytest.raises(ValueError, match="fewer than two 1/3-octave bands"):
         vbi.fit_iso8608(vbi.Profile.iso8608(3.0, 0.05, c10=1e-4, seed=1))
-
-
-# ---------------------------------------------------------------------------- vehicle only
-TRUCK = vbi.Vehicle.from_frequency(200 * u.slinch, 2.8, 0.20)
-SPEED = 720 * u.inch
-
-
-def test_rigid_road_contact_force_matches_the_decoupled_simulation() -> None:
-    road = vbi.Profile.iso8608(650 * u.ft, 1 * u.inch, c10=600e-6, waviness=2, seed=2)
-    bridge = vbi.Bridge(100 * u.ft, 1, 1e10, 1e4)
-    crossing = vbi.simulate(bridge, TRUCK, road, SPEED, 320 * u.ft, coupled=False)
-    time, after, _ = quarter_car_contact_force(road, TRUCK, SPEED)
-    inside = road.x < crossing.position[-1] - 1e-9
-    index = np.searchsorted(crossing.position, road.x[inside] - 1e-9)
-    same = np.abs(crossing.position[index] - road.x[inside]) < 1e-9
-    assert same.sum() > 4000
-    reference = crossing.contact_force[index[same]] - TRUCK.weight
-    np.testing.assert_allclose(after[inside][same], reference, atol=1e-6 * TRUCK.weight)
-    np.testing.assert_allclose(time[inside][same], crossing.time[index[same]], rtol=1e-12)
-
-
-def test_contact_force_on_a_long_sine_is_the_steady_state_closed_form() -> None:
-    """Base excitation: |F| = m w^2 |U|, |U/Y| = |k + i c w| / |k - m w^2 + i c w|."""
-    wavelength, amplitude = 30 * u.ft, 5e-3
-    road = vbi.Profile.harmonic(400.0, 0.02, wavelength=wavelength, amplitude=amplitude)
-    _, after, before = quarter_car_contact_force(road, TRUCK, SPEED)
-    # the sampled road is piecewise linear, so the force jumps by c * (change of slope) at
-    # each sample; the mean of the two sides is the force of the smooth sine to O(h^2)
-    force = 0.5 * (after + before)
-    m, k, c = TRUCK.mass, TRUCK.stiffness, TRUCK.damping
-    w = 2 * np.pi * SPEED / wavelength
-    transmissibility = abs(k + 1j * c * w) / abs(k - m * w**2 + 1j * c * w)
-    expected = m * w**2 * transmissibility * amplitude
-    late = road.x > 200.0
-    assert np.abs(force[late]).max() == pytest.approx(expected, rel=1e-4)
-    assert np.abs(after[late]).max() == pytest.approx(expected, rel=3e-3)
-
-
-def test_window_of_a_steady_sine_force() -> None:
-    """Amplification = max over the span of (W + F(t)) sin(pi xi / L) / W, F from closed form."""
-    wavelength, amplitude, span, start = 30 * u.ft, 5e-3, 100 * u.ft, 300.0
-    road = vbi.Profile.harmonic(400.0, 0.01, wavelength=wavelength, amplitude=amplitude)
-    result = contact_force_amplification(road, TRUCK, SPEED, start, span)
-    m, k, c = TRUCK.mass, TRUCK.stiffness, TRUCK.damping
-    w = 2 * np.pi * SPEED / wavelength
-    # steady state: u = Y H sin(w t) with H = (k + i c w)/(k - m w^2 + i c w); F = m u''
-    h = (k + 1j * c * w) / (k - m * w**2 + 1j * c * w)
-    x = np.linspace(start, start + span, 200001)
-    phase = 2 * np.pi * x / wavelength
-    force = -m * w**2 * amplitude * np.imag(h * np.exp(1j * phase))
-    windowed = (TRUCK.weight + force) * np.sin(np.pi * (x - start) / span) / TRUCK.weight
-    # the force of the piecewise-linear road jumps at samples (first order in the spacing)
-    assert result.amplification[0] == pytest.approx(windowed.max(), rel=5e-4)
-    assert result.peak_position[0] == pytest.approx(x[np.argmax(windowed)], abs=0.05)
-    dynamic = contact_force_amplification(road, TRUCK, SPEED, start, span, dynamic_only=True)
-    expected = (force * np.sin(np.pi * (x - start) / span)).max() / TRUCK.weight
-    assert dynamic.amplification[0] == pytest.approx(expected, rel=3e-3)
-
-
-def test_a_smooth_road_gives_one_on_every_span() -> None:
-    road = vbi.Profile.flat(600 * u.ft, 1 * u.inch)
-    result = contact_force_amplification(road, TRUCK, SPEED, 320 * u.ft, 40 * u.ft, n_spans=3)
-    np.testing.assert_allclose(result.amplification, 1.0, atol=1e-12)
-    np.testing.assert_allclose(result.peak_position, 320 * u.ft + (np.arange(3) + 0.5) * 40 * u.ft)
-
-
-def test_contact_force_amplification_checks_its_bridge() -> None:
-    road = vbi.Profile.flat(100.0, 0.05)
-    with pytest.raises(ValueError, match="must lie on the profile"):
-        contact_force_amplification(road, TRUCK, SPEED, 80.0, 30.0)
-    with pytest.raises(ValueError, match="n_spans=0"):
-        contact_force_amplification(road, TRUCK, SPEED, 10.0, 30.0, n_spans=0)
-    with pytest.raises(ValueError, match="speed"):
-        contact_force_amplification(road, TRUCK, -1.0, 10.0, 30.0)
 
 
 @pytest.mark.parametrize("c10", [300e-6, 600e-6])

@@ -15,38 +15,30 @@ import numpy as np
 import pytest
 
 import vbi_lib as vbi
-from vbi_lib import units as u
+from vbi_lib import study_data as sd
 from vbi_lib.studies import agreement
-from vbi_lib.study_data import assessment_inputs
 
-SPEED = 720 * u.inch
-BRIDGE_START = 3840 * u.inch
+SPEED = sd.ASSESSMENT_SPEED  # 720 in/s
+BRIDGE_START = sd.ASSESSMENT_BRIDGE_START  # 3840 in
 
 
 @pytest.fixture(scope="module")
 def assessment(shared_data: Path):  # noqa: ANN201
-    import pandas as pd
-
-    folder = shared_data / "seed-study"
-    table = pd.read_csv(folder / "scenarios-239.csv")
-    profiles = {}
-    for name in table.profile.unique():
-        data = np.loadtxt(folder / "profiles" / name, delimiter=",")
-        profiles[name] = vbi.Profile(data[:, 0] * u.inch, (data[:, 1] - data[0, 1]) * u.inch)
+    table, profiles = sd.read_assessment_set(shared_data / "seed-study")
     one_span = table.n_spans.to_numpy() == 1
     fe = table.fe_daf.to_numpy()
 
     # most of these crossings lose contact (the study's worst-case truck); that is
     # reported by the models and examined in the book, not here
     warnings.simplefilter("ignore", vbi.ContactLossWarning)
-    study_beams, trucks, roads = assessment_inputs(table, profiles, beam="study")
+    study_beams, trucks, roads = sd.assessment_inputs(table, profiles, beam="study")
     two_dof = np.array(
         [
             vbi.simulate(b, t, r, SPEED, BRIDGE_START).daf.max()
             for b, t, r in zip(study_beams, trucks, roads, strict=True)
         ]
     )
-    exact_beams, _, _ = assessment_inputs(table, profiles, beam="exact")
+    exact_beams, _, _ = sd.assessment_inputs(table, profiles, beam="exact")
     many = vbi.simulate_many(
         exact_beams, trucks, roads, SPEED, BRIDGE_START, model="modal", modes=5
     )

@@ -10,7 +10,17 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 3.99
 """
 
-from . import amplification, display, models, monitoring, roughness, studies, units
+from . import (
+    amplification,
+    closed_forms,
+    display,
+    models,
+    monitoring,
+    roughness,
+    studies,
+    study_data,
+    units,
+)
 from .beam_modes import BeamModes, beam_modes
 from .bridges import Bridge, reference_beam, shape_function_error
 from .models import (
@@ -23,17 +33,11 @@ from .models import (
     simulate_many,
     state_matrices,
 )
-from .profiles import (
-    ErdFile,
-    Profile,
-    ProfileFileError,
-    iso8608_class,
-    max_sample_spacing,
-    read_erd,
-    read_profile,
-)
-from .roughness import contact_force_amplification, fit_iso8608, iri, profile_spectrum
+from .profile_files import ErdFile, ProfileFileError, read_erd, read_profile
+from .profiles import Profile, iso8608_class, max_sample_spacing
+from .roughness import fit_iso8608, iri, profile_spectrum
 from .validity import ContactLossWarning, VbiWarning
+from .vehicle_metrics import contact_force_amplification
 from .vehicles import Vehicle
 
 __all__ = [
@@ -52,6 +56,7 @@ __all__ = [
     "Vehicle",
     "amplification",
     "beam_modes",
+    "closed_forms",
     "contact_force_amplification",
     "display",
     "fit_iso8608",
@@ -70,6 +75,7 @@ __all__ = [
     "simulate_many",
     "state_matrices",
     "studies",
+    "study_data",
     "units",
 ]
 

@@ -225,23 +225,6 @@ def mass_per_length_for(EI: float, span: float, first_frequency_hz: float) -> fl
     return math.pi**4 * EI / (omega**2 * span**4)
 
 
-def shape_function_error(n_spans: int) -> float:
-    """Error of the sine shape function in the midspan deflection under a midspan load (39), (65).
-
-    The model's deflection ``P / k*`` against the exact beam value: one span
-    ``1 - 96 / pi^4`` (1.45 %), two spans ``1 - 1536 / (23 pi^4)`` (31.4 %).
-
-    Examples
-    --------
-    >>> round(shape_function_error(1), 4), round(shape_function_error(2), 3)
-    (0.0145, 0.314)
-    """
-    n_spans = check.n_spans(n_spans)
-    model = 2.0 / math.pi**4 if n_spans == 1 else 1.0 / math.pi**4
-    exact = 1.0 / 48.0 if n_spans == 1 else 23.0 / 1536.0
-    return 1.0 - model / exact
-
-
 def reference_beam(
     span: float,
     n_spans: int,
@@ -286,3 +269,20 @@ def reference_beam(
     frequency = check.positive("first_frequency_hz", first_frequency_hz)
     EI = k_mid * span**3 * (1.0 / 48.0 if n_spans == 1 else 23.0 / 1536.0)
     return Bridge(span, n_spans, EI, mass_per_length_for(EI, span, frequency), damping_ratio)
+
+
+def shape_function_error(n_spans: int) -> float:
+    """Error of the sine shape function in the midspan deflection under a midspan load (39), (65).
+
+    The model's deflection ``P / k*`` against the exact beam value: one span
+    ``1 - 96 / pi^4`` (1.45 %), two spans ``1 - 1536 / (23 pi^4)`` (31.4 %).
+
+    Examples
+    --------
+    >>> round(shape_function_error(1), 4), round(shape_function_error(2), 3)
+    (0.0145, 0.314)
+    """
+    n_spans = check.n_spans(n_spans)
+    model = 2.0 / math.pi**4 if n_spans == 1 else 1.0 / math.pi**4
+    exact = 1.0 / 48.0 if n_spans == 1 else 23.0 / 1536.0
+    return 1.0 - model / exact

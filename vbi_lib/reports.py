@@ -27,7 +27,8 @@ from typing import Any
 
 from . import units as u
 from .bridges import Bridge
-from .profiles import Profile, read_profile
+from .profile_files import read_profile
+from .profiles import Profile
 from .vehicles import Vehicle
 
 TEMPLATE = Path(__file__).resolve().parent / "templates" / "bridge_report.ipynb"

@@ -1,7 +1,8 @@
-r"""Roughness of a road profile: ISO 8608 parameters, the IRI and a vehicle-only metric.
+r"""Roughness of a road profile: ISO 8608 parameters and the IRI.
 
-Three ways to put a number on a profile, each weighed in the study's chapter 14 as a
-predictor of dynamic amplification:
+Two ways to put a number on a profile, each weighed in the study's chapter 14 as a
+predictor of dynamic amplification (the third, a vehicle-only contact-force metric, is in
+:mod:`vbi_lib.vehicle_metrics`):
 
 **ISO 8608 parameters** (:func:`fit_iso8608`, :func:`profile_spectrum`).  The displacement
 PSD of the road is modelled as :math:`G_d(n) = C_{10} (n / n_0)^{-w}`, :math:`n_0 = 0.1`
@@ -29,12 +30,6 @@ smoothed profile, constant over each sample interval, so one step is exactly
 :math:`\Delta t = \Delta x / V`.  The car starts at steady state on the mean slope of the
 first 11 m; the IRI is the mean of :math:`|z_1 - z_3|` (suspension stroke rate over speed),
 reported in m/km (1 m/km = 63.36 in/mi).
-
-**Contact-force amplification** (:func:`contact_force_amplification`).  The study's
-vehicle-only metric: the truck (a sprung mass) rides the profile on a rigid road, its contact
-force is weighted by a half sine over each span (the span's midspan influence line shape), and
-the peak is divided by the weight.  The sprung mass is driven by a piecewise-linear road, so
-it too is stepped exactly with a matrix exponential.
 """
 
 from __future__ import annotations
@@ -50,7 +45,6 @@ import scipy.signal
 
 from . import _validation as check
 from .profiles import ISO_BAND, Profile
-from .vehicles import Vehicle
 
 #: Golden quarter car, per unit sprung mass: k1 [1/s^2], k2 [1/s^2], c [1/s], mu [-].
 GOLDEN_CAR = {"k1": 653.0, "k2": 63.3, "c": 6.0, "mu": 0.15}
@@ -259,31 +253,99 @@ def _iri_kernel(slope, st, pr, state, stroke):
 
 
 @dataclass(frozen=True, eq=False)
-class IriSegments:
-    """IRI of consecutive segments of a profile [m/km] (the car's state carried across).
+class IriResult:
+    """The IRI of a profile: the whole road and consecutive segments of it (m/km).
 
-    ``start`` and ``stop`` [m] bound each segment (the last may be shorter); ``iri`` [m/km];
-    ``whole`` is the IRI of the whole profile.
+    Whatever :func:`iri` is asked, it returns this: ``result.iri`` is the whole-road IRI
+    [m/km] (the one number to quote), and the segments hold the IRI of each consecutive piece
+    of ``segment_length`` metres (one segment covering the road when no length was asked).
+
+    Attributes
+    ----------
+    iri
+        IRI of the whole profile [m/km] (multiply by :data:`IN_PER_MI` for in/mi).
+    start, stop
+        Stations bounding each segment [m], shape ``(n_segments,)``; the last segment may be
+        shorter than ``segment_length``.
+    segment_iri
+        IRI of each segment [m/km], shape ``(n_segments,)``; NaN only for a segment shorter
+        than one sample interval, which holds no slope step (``valid`` is then False).
+    segment_length
+        Length asked for [m], or ``None`` (one segment: the whole road).
+    name
+        Name of the profile.
+
+    Examples
+    --------
+    >>> road = Profile.harmonic(1000.0, 0.025, wavelength=10.0, amplitude=0.001, phase=0.3)
+    >>> result = iri(road, segment_length=400.0)
+    >>> result
+    IriResult('harmonic 10 m', 1000 m: IRI 0.50 m/km; 3 segments of 400 m: 0.50, 0.50, 0.50)
+    >>> round(result.iri, 3), len(result)
+    (0.503, 3)
+    >>> result.to_dataframe().round(2)  # doctest: +NORMALIZE_WHITESPACE
+             start_m  stop_m  iri_m_per_km
+    segment
+    0            0.0   400.0           0.5
+    1          400.0   800.0           0.5
+    2          800.0  1000.0           0.5
     """
 
+    iri: float
     start: np.ndarray
     stop: np.ndarray
-    iri: np.ndarray
-    whole: float
+    segment_iri: np.ndarray
+    segment_length: float | None = None
+    name: str = ""
+
+    @property
+    def valid(self) -> np.ndarray:
+        """``True`` for each segment with at least one slope step (a finite IRI)."""
+        return np.isfinite(self.segment_iri)
 
     def __len__(self) -> int:
-        return self.iri.size
+        return int(self.segment_iri.size)
+
+    def to_dataframe(self):  # noqa: ANN201
+        """One row per segment: ``start_m``, ``stop_m``, ``iri_m_per_km`` (index ``segment``)."""
+        import pandas as pd
+
+        table = pd.DataFrame(
+            {"start_m": self.start, "stop_m": self.stop, "iri_m_per_km": self.segment_iri}
+        )
+        return table.rename_axis("segment")
+
+    def plot(self, ax=None, label: str | None = None):  # noqa: ANN001, ANN201
+        """Segment IRI as steps along the road, with the whole-road value dashed."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(6, 3))
+        edges = np.append(self.start, self.stop[-1])
+        values = np.append(self.segment_iri, self.segment_iri[-1])
+        (line,) = ax.step(edges, values, where="post", label=label or self.name or "segments")
+        ax.axhline(
+            self.iri, color=line.get_color(), ls="--", lw=1, label=f"whole {self.iri:.2f} m/km"
+        )
+        ax.set_xlabel("station [m]")
+        ax.set_ylabel("IRI [m/km]")
+        ax.legend(loc="best", fontsize="small")
+        return ax
 
     def __repr__(self) -> str:
-        shown = ", ".join(f"{v:.2f}" for v in self.iri[:6])
-        more = ", ..." if self.iri.size > 6 else ""
+        label = f"{self.name!r}, " if self.name else ""
+        length = self.stop[-1] - self.start[0]
+        head = f"IriResult({label}{length:.0f} m: IRI {self.iri:.2f} m/km"
+        if self.segment_length is None:
+            return head + ")"
+        shown = ", ".join(f"{v:.2f}" for v in self.segment_iri[:6])
+        more = ", ..." if self.segment_iri.size > 6 else ""
         return (
-            f"IriSegments({self.iri.size} segments of {self.stop[0] - self.start[0]:g} m: "
-            f"[{shown}{more}] m/km; whole {self.whole:.2f} m/km)"
+            f"{head}; {self.segment_iri.size} segments of {self.segment_length:g} m: {shown}{more})"
         )
 
 
-def iri(profile: Profile, segment_length: float | None = None) -> float | IriSegments:
+def iri(profile: Profile, segment_length: float | None = None) -> IriResult:
     """International Roughness Index of a profile [m/km] (Sayers 1995, ASTM E1926).
 
     The golden quarter car at 80 km/h over the profile smoothed by a 250 mm moving average,
@@ -296,27 +358,37 @@ def iri(profile: Profile, segment_length: float | None = None) -> float | IriSeg
     profile
         The road (stations and elevations in metres); sample at 250 mm or finer.
     segment_length
-        ``None`` for one value over the whole profile; otherwise the IRI of each consecutive
-        segment of this length [m] from the first station (one run, the car's state carried
-        from segment to segment; each slope step is assigned to the segment holding the
-        middle of its 250 mm base).
+        ``None`` for one segment covering the whole profile; otherwise consecutive segments
+        of this length [m] from the first station (one run, the car's state carried from
+        segment to segment; each slope step is assigned to the segment holding the middle of
+        its 250 mm base).
 
     Returns
     -------
-    float or IriSegments
-        IRI in m/km (multiply by 63.36 for in/mi).
+    IriResult
+        ``result.iri`` the whole-road IRI [m/km] (multiply by 63.36 for in/mi);
+        ``result.segment_iri`` the IRI of each segment.
+
+    Raises
+    ------
+    ValueError
+        A profile shorter than the 250 mm moving average, or ``segment_length`` not positive.
 
     Examples
     --------
     A 1 mm sine of wavelength 10 m (the steady-state value is 0.503 m/km):
 
     >>> road = Profile.harmonic(2000.0, 0.025, wavelength=10.0, amplitude=0.001)
-    >>> round(iri(road), 3)
+    >>> round(iri(road).iri, 3)
     0.503
-    >>> iri(road, segment_length=500.0)
-    IriSegments(4 segments of 500 m: [0.50, 0.50, 0.50, 0.50] m/km; whole 0.50 m/km)
+    >>> iri(road, segment_length=800.0)
+    IriResult('harmonic 10 m', 2000 m: IRI 0.50 m/km; 3 segments of 800 m: 0.50, 0.50, 0.50)
+    >>> iri(road)
+    IriResult('harmonic 10 m', 2000 m: IRI 0.50 m/km)
     """
     profile = _uniform(profile)
+    if segment_length is not None:
+        segment_length = check.positive("segment_length", segment_length)
     dx = profile.spacing
     y = profile.elevation
     base = max(1, int(round(IRI_BASE / dx)))
@@ -332,9 +404,9 @@ def iri(profile: Profile, segment_length: float | None = None) -> float | IriSeg
     stroke = np.empty(slope.size)
     _iri_kernel(slope, st, pr, np.array([initial, 0.0, initial, 0.0]), stroke)
     whole = float(stroke.mean() * 1000.0)
-    if segment_length is None:
-        return whole
-    segment_length = check.positive("segment_length", segment_length)
+    if segment_length is None:  # one segment: the whole road
+        start, stop, values = np.array([profile.start]), np.array([profile.end]), np.array([whole])
+        return IriResult(whole, start, stop, values, None, profile.name)
     centre = profile.x[: slope.size] + 0.5 * base * dx
     count = max(1, math.ceil(profile.length / segment_length - 1e-9))
     index = np.minimum(((centre - profile.start) // segment_length).astype(np.int64), count - 1)
@@ -344,7 +416,7 @@ def iri(profile: Profile, segment_length: float | None = None) -> float | IriSeg
     values[steps > 0] = sums[steps > 0] / steps[steps > 0] * 1000.0
     start = profile.start + segment_length * np.arange(count)
     stop = np.minimum(start + segment_length, profile.end)
-    return IriSegments(start, stop, values, whole)
+    return IriResult(whole, start, stop, values, segment_length, profile.name)
 
 
 def _golden_transition(dt: float) -> tuple[np.ndarray, np.ndarray]:
@@ -366,191 +438,14 @@ def _uniform(profile: Profile) -> Profile:
     return profile.resampled(spacing)
 
 
-# ---------------------------------------------------------------------------- vehicle only
-@dataclass(frozen=True, eq=False)
-class ContactForceAmplification:
-    """The study's vehicle-only metric for one crossing (chapter 14).
-
-    Attributes
-    ----------
-    amplification
-        Per span, the largest ``R(t) sin(pi xi / L)`` over the vehicle's weight while the
-        vehicle is on that span (``xi`` its distance from the span's start); with
-        ``dynamic_only=True`` the dynamic part ``F = R - W`` is windowed instead.
-    peak_position
-        Station of each span's peak [m].
-    position, time, contact_force
-        Wheel station [m], time from the start [s] and contact force ``R = W + F`` [N] at
-        every profile sample up to the end of the bridge (force just after the station).
-    weight
-        Vehicle weight ``W`` [N].
-    """
-
-    amplification: np.ndarray
-    peak_position: np.ndarray
-    position: np.ndarray
-    time: np.ndarray
-    contact_force: np.ndarray
-    weight: float
-    dynamic_only: bool = False
-
-    @property
-    def peak(self) -> float:
-        """Largest amplification over the spans."""
-        return float(self.amplification.max())
-
-    def __repr__(self) -> str:
-        values = ", ".join(f"{a:.3f}" for a in self.amplification)
-        kind = "dynamic part" if self.dynamic_only else "contact force"
-        return f"ContactForceAmplification(windowed {kind} / weight per span: {values})"
-
-
-def quarter_car_contact_force(
-    profile: Profile, vehicle: Vehicle, speed: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Contact force of a sprung mass riding ``profile`` on a rigid road (decoupled model, 92).
-
-    ``m u'' = F``, ``F = k (Delta - u) + c (Delta' - u')`` with the profile linear between
-    samples, so over each step the input rate is constant and the step is exact:
-    the augmented state ``(u, u', Delta, Delta')`` is advanced with ``exp(M h)``.  The mass
-    starts at rest on the first sample (``u = Delta(x0)``).
-
-    Returns
-    -------
-    time [s], force_after, force_before
-        At every sample: ``F`` [N] with the road rate of the step that starts there
-        (``force_after``, the last sample uses the step that ends there) and with the rate of
-        the step that ends there (``force_before``; the first sample uses the one starting).
-    """
-    speed = check.positive("speed", speed)
-    m, k, c = vehicle.mass, vehicle.stiffness, vehicle.damping
-    x, delta = profile.x, profile.elevation
-    h = np.diff(x) / speed
-    rate = np.diff(delta) / h
-    system = np.array(
-        [
-            [0.0, 1.0, 0.0, 0.0],
-            [-k / m, -c / m, k / m, c / m],
-            [0.0, 0.0, 0.0, 1.0],
-            [0.0, 0.0, 0.0, 0.0],
-        ]
-    )
-    keys = np.round(h / h.max(), 9)
-    unique, which = np.unique(keys, return_inverse=True)
-    transitions = np.stack([scipy.linalg.expm(system * (u * h.max())) for u in unique])
-    u = np.empty(x.size)
-    v = np.empty(x.size)
-    u[0], v[0] = delta[0], 0.0
-    _sdof_kernel(transitions, which.astype(np.int64), delta, rate, u, v)
-    after_rate = np.append(rate, rate[-1])
-    before_rate = np.insert(rate, 0, rate[0])
-    spring = k * (delta - u) - c * v
-    time = np.concatenate(([0.0], np.cumsum(h)))
-    return time, spring + c * after_rate, spring + c * before_rate
-
-
-@numba.njit(cache=True)
-def _sdof_kernel(transitions, which, delta, rate, u, v):
-    for i in range(rate.size):
-        t = transitions[which[i]]
-        a, b, d, r = u[i], v[i], delta[i], rate[i]
-        u[i + 1] = t[0, 0] * a + t[0, 1] * b + t[0, 2] * d + t[0, 3] * r
-        v[i + 1] = t[1, 0] * a + t[1, 1] * b + t[1, 2] * d + t[1, 3] * r
-
-
-def contact_force_amplification(
-    profile: Profile,
-    vehicle: Vehicle,
-    speed: float,
-    bridge_start: float,
-    span: float,
-    n_spans: int = 1,
-    dynamic_only: bool = False,
-) -> ContactForceAmplification:
-    """The study's vehicle-only roughness metric (chapter 14), per span.
-
-    The truck rides the profile on a rigid road from ``profile.x[0]`` (at rest), see
-    :func:`quarter_car_contact_force`.  While it is on span ``j`` its contact force
-    ``R = W + F`` is multiplied by the half sine ``sin(pi xi / span)`` (``xi`` its distance
-    into the span: the shape of the span's midspan influence line); the largest value over the
-    weight ``W`` is that span's amplification.  A smooth road gives 1.  With
-    ``dynamic_only=True`` only ``F`` is windowed (a smooth road gives 0).
-
-    Parameters
-    ----------
-    profile, vehicle
-        The road and the sprung mass.
-    speed
-        Vehicle speed [m/s].
-    bridge_start
-        Station of the first support [m].
-    span
-        Span length [m].
-    n_spans
-        Number of equal spans (any whole number >= 1).
-    dynamic_only
-        Window the dynamic force ``F`` instead of ``R``.
-
-    Examples
-    --------
-    >>> from vbi_lib import units as u
-    >>> truck = Vehicle.from_frequency(200 * u.slinch, 2.8, 0.2)
-    >>> road = Profile.flat(500 * u.ft, 1 * u.inch)
-    >>> contact_force_amplification(road, truck, 720 * u.inch, 320 * u.ft, 100 * u.ft)
-    ContactForceAmplification(windowed contact force / weight per span: 1.000)
-    """
-    speed = check.positive("speed", speed)
-    span = check.positive("span", span)
-    bridge_start = float(bridge_start)
-    if isinstance(n_spans, bool) or int(n_spans) != n_spans or n_spans < 1:
-        raise ValueError(f"n_spans={n_spans!r} must be a whole number >= 1")
-    n_spans = int(n_spans)
-    end = bridge_start + n_spans * span
-    if not (profile.start <= bridge_start and end <= profile.end):
-        raise ValueError(
-            f"the bridge [{bridge_start:g}, {end:g}] m must lie on the profile "
-            f"[{profile.start:g}, {profile.end:g}] m"
-        )
-    supports = bridge_start + span * np.arange(n_spans + 1)
-    midspans = supports[:-1] + 0.5 * span
-    x = np.concatenate((profile.x[profile.x < end], supports, midspans))
-    x = np.unique(x[(x >= profile.start) & (x <= end)])
-    road = Profile(x, profile.elevation_at(x), name=profile.name)
-    time, after, before = quarter_car_contact_force(road, vehicle, speed)
-    weight = vehicle.weight
-    force = np.maximum(after, before)
-    if not dynamic_only:
-        force = force + weight
-    amplification = np.empty(n_spans)
-    where = np.empty(n_spans)
-    for j in range(n_spans):
-        on = (x >= supports[j]) & (x <= supports[j + 1])
-        windowed = force[on] * np.sin(np.pi * (x[on] - supports[j]) / span)
-        best = int(np.argmax(windowed))
-        amplification[j] = windowed[best] / weight
-        where[j] = x[on][best]
-    return ContactForceAmplification(
-        amplification=amplification,
-        peak_position=where,
-        position=x,
-        time=time,
-        contact_force=weight + after,
-        weight=weight,
-        dynamic_only=bool(dynamic_only),
-    )
-
-
 __all__ = [
     "GOLDEN_CAR",
     "IN_PER_MI",
-    "ContactForceAmplification",
     "Iso8608Fit",
-    "IriSegments",
+    "IriResult",
     "ProfileSpectrum",
-    "contact_force_amplification",
     "fit_iso8608",
     "golden_car_matrices",
     "iri",
     "profile_spectrum",
-    "quarter_car_contact_force",
 ]

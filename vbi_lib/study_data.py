@@ -1,12 +1,333 @@
-"""The study's data: each row of its model-assessment set turned into model inputs."""
+r"""The study's data: its printed tables, and the reader of its 239-scenario assessment set.
+
+**Tables, as printed** (US customary units, the study's own rounding; a column's unit is in
+its name, ``lbf_in2`` for lb in^2, ``slinch`` for lbf s^2/in).  Each function returns a new
+:class:`pandas.DataFrame`:
+
+* :func:`table_2_13_1`: the validation beam and sprung mass;
+* :func:`table_2_13_8`: the twelve state-space beams of the model assessment, whose EI and
+  mass per span follow from the path's midspan stiffness and the first frequency by
+  equations (82)-(84) (:meth:`vbi_lib.Bridge.from_midspan_stiffness`);
+* :func:`table_2_13_9` and :func:`table_2_13_10`: the assessment's sprung-mass trucks, with
+  ``k = m omega^2`` and ``c = 2 zeta m omega`` (85);
+* :func:`table_2_15_3` and :func:`table_2_15_4`: the bridges and trucks of the parametric
+  study.
+
+**The model-assessment set** (chapter 13): :func:`read_assessment_set` reads a folder laid
+out like the study's data set (``scenarios-239.csv`` and ``profiles/*.csv``, see its
+README), and :func:`assessment_inputs` turns each scenario row into the model's inputs:
+a :class:`vbi_lib.Bridge`, a :class:`vbi_lib.Vehicle` and a :class:`vbi_lib.Profile`.
+In every scenario the truck starts at station 0 and drives at 720 in/s onto a bridge that
+starts at 3840 in (:data:`ASSESSMENT_SPEED`, :data:`ASSESSMENT_BRIDGE_START`).
+
+The data set itself has no licence: it is read from where it lies, never copied.
+"""
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pandas as pd
+
+from . import units as u
 from .bridges import Bridge, reference_beam
+from .profile_files import read_profile
 from .profiles import Profile
 from .vehicles import Vehicle
 
-__all__ = ["assessment_inputs"]
+__all__ = [
+    "ASSESSMENT_BRIDGE_START",
+    "ASSESSMENT_SPEED",
+    "AssessmentSet",
+    "assessment_inputs",
+    "read_assessment_set",
+    "table_2_13_1",
+    "table_2_13_8",
+    "table_2_13_9",
+    "table_2_13_10",
+    "table_2_15_3",
+    "table_2_15_4",
+]
+
+#: Speed of every assessment crossing, 720 in/s [m/s].
+ASSESSMENT_SPEED = 720 * u.inch
+#: Station where every assessment bridge starts: 320 ft of approach, 3840 in [m].
+ASSESSMENT_BRIDGE_START = 3840 * u.inch
+
+#: Columns :func:`assessment_inputs` reads from each scenario row.
+SCENARIO_COLUMNS = (
+    "span_ft",
+    "n_spans",
+    "k_mid_lbf_per_in",
+    "bridge_f1_hz",
+    "vehicle_mass_slinch",
+    "vehicle_k_lbf_per_in",
+    "vehicle_c_lbf_s_per_in",
+    "profile",
+)
+
+
+# ---------------------------------------------------------------------------- printed tables
+def table_2_13_1() -> pd.DataFrame:
+    """Table 2.13.1: the beam and sprung mass of the validation simulations (one row).
+
+    Columns ``span_ft``, ``mass_per_length_kip_per_ft`` (the text's "distributed mass",
+    a weight per length: divide by g), ``EI_lbf_in2``, ``vehicle_mass_slinch``,
+    ``vehicle_k_lbf_per_in``, ``vehicle_damping_ratio``.
+
+    Examples
+    --------
+    >>> table_2_13_1().iloc[0].to_dict()  # doctest: +NORMALIZE_WHITESPACE
+    {'span_ft': 100.0, 'mass_per_length_kip_per_ft': 4.6, 'EI_lbf_in2': 7500000000000.0,
+     'vehicle_mass_slinch': 100.0, 'vehicle_k_lbf_per_in': 63165.5, 'vehicle_damping_ratio': 0.1}
+    """
+    return pd.DataFrame(
+        {
+            "span_ft": [100.0],
+            "mass_per_length_kip_per_ft": [4.6],
+            "EI_lbf_in2": [7.5e12],
+            "vehicle_mass_slinch": [100.0],
+            "vehicle_k_lbf_per_in": [63.1655e3],
+            "vehicle_damping_ratio": [0.10],
+        }
+    )
+
+
+def table_2_13_8() -> pd.DataFrame:
+    """Table 2.13.8: the twelve state-space beams of the model assessment.
+
+    One row per bridge and path (index ``row``, 1 to 12, as printed): ``span_ft``,
+    ``n_spans``, ``f1_hz`` (first natural frequency), ``path``, ``k_mid_lbf_per_in`` (midspan
+    stiffness of the path, Tables 2.13.5-2.13.7), ``EI_lbf_in2`` and ``mass_per_span_slinch``
+    (from (82)-(84), rounded as printed).  Bridge damping: 1 %.
+
+    Examples
+    --------
+    >>> row = table_2_13_8().loc[3]
+    >>> int(row.span_ft), int(row.n_spans), float(row.k_mid_lbf_per_in), f"{row.EI_lbf_in2:.4g}"
+    (40, 2, 721006.0, '8.186e+11')
+    """
+    rows = [
+        # span ft, spans, f1 Hz, path, K_mid lb/in, EI lb in^2, mass per span slinch
+        (40, 1, 9.95, 1, 587723, 1.354e12, 305.16),
+        (40, 1, 9.95, 2, 524293, 1.208e12, 272.22),
+        (40, 2, 9.98, 1, 721006, 8.186e11, 183.37),
+        (40, 2, 9.98, 2, 661235, 7.507e11, 168.16),
+        (100, 1, 3.99, 1, 497527, 1.791e13, 1606.46),
+        (100, 1, 3.99, 2, 639676, 2.303e13, 2065.44),
+        (100, 1, 3.99, 3, 667262, 2.402e13, 2154.51),
+        (100, 2, 3.99, 1, 668815, 1.186e13, 1064.14),
+        (100, 2, 3.99, 2, 822043, 1.458e13, 1307.94),
+        (100, 2, 3.99, 3, 837570, 1.486e13, 1332.65),
+        (140, 1, 2.08, 1, 222278, 2.196e13, 2641.00),
+        (140, 2, 2.08, 1, 246992, 1.202e13, 1446.09),
+    ]
+    columns = [
+        "span_ft",
+        "n_spans",
+        "f1_hz",
+        "path",
+        "k_mid_lbf_per_in",
+        "EI_lbf_in2",
+        "mass_per_span_slinch",
+    ]
+    table = pd.DataFrame(rows, columns=columns, index=pd.RangeIndex(1, 13, name="row"))
+    return table.astype({"span_ft": float, "k_mid_lbf_per_in": float})
+
+
+def table_2_13_9() -> pd.DataFrame:
+    """Table 2.13.9: the sprung-mass truck of each assessment bridge length.
+
+    Index ``span_ft`` (40, 100, 140); columns ``mass_slinch``, ``k_lbf_per_in``,
+    ``c_lbf_s_per_in``, ``damping_ratio`` and ``damped_frequency_hz`` (the table gives the
+    damped frequency: ``omega = 2 pi f_d / sqrt(1 - zeta^2)`` in (85)).
+
+    Examples
+    --------
+    >>> table_2_13_9().loc[100.0, ["k_lbf_per_in", "c_lbf_s_per_in"]].tolist()
+    [161500.0, 1136.67]
+    """
+    return pd.DataFrame(
+        {
+            "mass_slinch": [200.0, 200.0, 200.0],
+            "k_lbf_per_in": [8.7929e5, 1.6150e5, 4.9846e4],
+            "c_lbf_s_per_in": [2652.23, 1136.67, 631.48],
+            "damping_ratio": [0.10, 0.10, 0.10],
+            "damped_frequency_hz": [10.5, 4.5, 2.5],
+        },
+        index=pd.Index([40.0, 100.0, 140.0], name="span_ft"),
+    )
+
+
+def table_2_13_10() -> pd.DataFrame:
+    """Table 2.13.10: the 2.8 Hz sprung-mass truck used on every assessment bridge (one row).
+
+    Columns ``mass_slinch``, ``k_lbf_per_in``, ``c_lbf_s_per_in``, ``damping_ratio``,
+    ``frequency_hz`` (undamped).
+
+    Examples
+    --------
+    >>> table_2_13_10().iloc[0].tolist()
+    [200.0, 61902.2, 1407.43, 0.2, 2.8]
+    """
+    return pd.DataFrame(
+        {
+            "mass_slinch": [200.0],
+            "k_lbf_per_in": [61902.2],
+            "c_lbf_s_per_in": [1407.43],
+            "damping_ratio": [0.20],
+            "frequency_hz": [2.8],
+        }
+    )
+
+
+def table_2_15_3() -> pd.DataFrame:
+    """Table 2.15.3: the four bridges of the parametric study (100 ft, 2000 slinch in all).
+
+    Index ``bridge`` (1 to 4); columns ``span_ft``, ``total_mass_slinch``, ``EI_lbf_in2``,
+    ``damping_ratio``, ``f1_hz``.
+
+    Examples
+    --------
+    >>> [f"{ei:.3e}" for ei in table_2_15_3()["EI_lbf_in2"]]
+    ['5.603e+12', '1.261e+13', '2.241e+13', '3.502e+13']
+    """
+    return pd.DataFrame(
+        {
+            "span_ft": [100.0] * 4,
+            "total_mass_slinch": [2000.0] * 4,
+            "EI_lbf_in2": [5.603e12, 1.261e13, 2.241e13, 3.502e13],
+            "damping_ratio": [0.01] * 4,
+            "f1_hz": [2.0, 3.0, 4.0, 5.0],
+        },
+        index=pd.RangeIndex(1, 5, name="bridge"),
+    )
+
+
+def table_2_15_4() -> pd.DataFrame:
+    """Table 2.15.4: the four trucks of the parametric study (200 slinch, 10 % damping).
+
+    Index ``truck`` (1 to 4); columns ``mass_slinch``, ``k_lbf_per_in``, ``damping_ratio``,
+    ``frequency_hz``.
+
+    Examples
+    --------
+    >>> table_2_15_4()["k_lbf_per_in"].tolist()
+    [31582.7, 71061.2, 126330.9, 197392.1]
+    """
+    return pd.DataFrame(
+        {
+            "mass_slinch": [200.0] * 4,
+            "k_lbf_per_in": [31582.7, 71061.2, 126330.9, 197392.1],
+            "damping_ratio": [0.10] * 4,
+            "frequency_hz": [2.0, 3.0, 4.0, 5.0],
+        },
+        index=pd.RangeIndex(1, 5, name="truck"),
+    )
+
+
+# ---------------------------------------------------------------------------- assessment set
+@dataclass(frozen=True, eq=False)
+class AssessmentSet:
+    """The study's model-assessment scenarios and the roads they name.
+
+    Unpacks as ``table, profiles = read_assessment_set(folder)``.
+
+    Attributes
+    ----------
+    table
+        One row per scenario (the columns of ``scenarios-239.csv``: bridge, truck, profile
+        file name, and the finite-element and study DAFs ``fe_daf``,
+        ``study_statespace_daf``).
+    profiles
+        The roads by file name, stations and elevations in metres, first elevation zero.
+    folder
+        The folder read.
+    """
+
+    table: pd.DataFrame = field(repr=False)
+    profiles: dict[str, Profile] = field(repr=False)
+    folder: Path
+
+    def __iter__(self) -> Iterator[object]:
+        return iter((self.table, self.profiles))
+
+    def __len__(self) -> int:
+        return len(self.table)
+
+    def __repr__(self) -> str:
+        return (
+            f"AssessmentSet({len(self.table)} scenarios, {len(self.profiles)} profiles "
+            f"from {str(self.folder)!r})"
+        )
+
+
+def read_assessment_set(folder: str | Path) -> AssessmentSet:
+    """Read the study's model-assessment set from a folder laid out like its data set.
+
+    ``folder/scenarios-239.csv`` holds one row per scenario; ``folder/profiles/<name>``
+    holds each road the table names: two columns, no header, station and elevation in
+    inches.  Each road becomes a :class:`vbi_lib.Profile` in metres with its first elevation
+    subtracted (the set's README: the truck starts at station 0).
+
+    Parameters
+    ----------
+    folder
+        The data set's folder (``../shared/data/seed-study`` beside the repository).
+
+    Returns
+    -------
+    AssessmentSet
+        ``table`` (a DataFrame) and ``profiles`` (``{file name: Profile}``); it unpacks as
+        ``table, profiles``.
+
+    Raises
+    ------
+    FileNotFoundError
+        The folder, the table or a profile the table names does not exist (the message
+        names the path).
+    ValueError
+        The table lacks a column :func:`assessment_inputs` needs, or a profile file is
+        malformed (:class:`vbi_lib.ProfileFileError`, naming the file and line).
+
+    Examples
+    --------
+    >>> read_assessment_set("/nowhere")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    FileNotFoundError: no assessment data set at '/nowhere': ...
+    """
+    folder = Path(folder)
+    if not folder.is_dir():
+        raise FileNotFoundError(
+            f"no assessment data set at {str(folder)!r}: give the folder holding "
+            "scenarios-239.csv and profiles/ (the study's data, ../shared/data/seed-study)"
+        )
+    path = folder / "scenarios-239.csv"
+    if not path.is_file():
+        raise FileNotFoundError(f"{str(path)!r} does not exist: the scenario table is missing")
+    try:
+        table = pd.read_csv(path)
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as error:
+        raise ValueError(f"{str(path)!r} is not a readable CSV table: {error}") from None
+    missing = [c for c in SCENARIO_COLUMNS if c not in table.columns]
+    if missing:
+        raise ValueError(
+            f"{str(path)!r} lacks the column(s) {missing}; a scenario table needs "
+            f"{list(SCENARIO_COLUMNS)}"
+        )
+    profiles = {}
+    for name in table["profile"].unique():
+        file = folder / "profiles" / str(name)
+        if not file.is_file():
+            raise FileNotFoundError(
+                f"{str(file)!r} does not exist: the scenario table names profile {name!r}"
+            )
+        road = read_profile(file, unit="in", name=str(name))
+        profiles[str(name)] = Profile(road.x, road.elevation - road.elevation[0], name=road.name)
+    return AssessmentSet(table, profiles, folder)
 
 
 def assessment_inputs(
@@ -32,10 +353,22 @@ def assessment_inputs(
         Roads by name, stations and elevations in metres.
     beam
         ``"study"``: :meth:`Bridge.from_midspan_stiffness`, the one-coordinate model's rule
-        (82)-(84); ``"exact"``: :func:`reference_beam`, the beam whose exact midspan
-        stiffness is ``K_mid`` (the consistent choice for the many-mode model).
+        (82)-(84); ``"exact"``: :func:`vbi_lib.bridges.reference_beam`, the beam whose exact
+        midspan stiffness is ``K_mid`` (the consistent choice for the many-mode model).
     damping_ratio
         Bridge damping ratio (the study: 1 %).
+
+    Returns
+    -------
+    bridges, vehicles, roads
+        One of each per row, in the table's order.
+
+    Raises
+    ------
+    ValueError
+        ``beam`` not ``"study"`` or ``"exact"``, a row naming a profile not given, or a row
+        whose numbers the :class:`Bridge` or :class:`Vehicle` refuses (the message names the
+        row).
 
     Examples
     --------
@@ -48,8 +381,6 @@ def assessment_inputs(
     >>> round(b[0].first_frequency_hz, 2), round(v[0].frequency_hz, 2)
     (9.98, 10.55)
     """
-    from . import units as u
-
     if beam not in ("study", "exact"):
         raise ValueError(f"beam={beam!r} must be 'study' or 'exact'")
     make = Bridge.from_midspan_stiffness if beam == "study" else reference_beam
@@ -57,21 +388,24 @@ def assessment_inputs(
     for i, row in enumerate(table.itertuples()):
         if row.profile not in profiles:
             raise ValueError(f"row {i}: profile {row.profile!r} is not among the roads given")
-        bridges.append(
-            make(
-                row.span_ft * u.ft,
-                int(row.n_spans),
-                row.k_mid_lbf_per_in * u.lbf / u.inch,
-                row.bridge_f1_hz,
-                damping_ratio,
+        try:
+            bridges.append(
+                make(
+                    row.span_ft * u.ft,
+                    int(row.n_spans),
+                    row.k_mid_lbf_per_in * u.lbf / u.inch,
+                    row.bridge_f1_hz,
+                    damping_ratio,
+                )
             )
-        )
-        vehicles.append(
-            Vehicle(
-                row.vehicle_mass_slinch * u.slinch,
-                row.vehicle_k_lbf_per_in * u.lbf / u.inch,
-                row.vehicle_c_lbf_s_per_in * u.lbf * u.s / u.inch,
+            vehicles.append(
+                Vehicle(
+                    row.vehicle_mass_slinch * u.slinch,
+                    row.vehicle_k_lbf_per_in * u.lbf / u.inch,
+                    row.vehicle_c_lbf_s_per_in * u.lbf * u.s / u.inch,
+                )
             )
-        )
+        except ValueError as error:
+            raise ValueError(f"row {i}: {error}") from None
         roads.append(profiles[row.profile])
     return bridges, vehicles, roads

@@ -66,7 +66,7 @@ def _iri_of_spans(road: Profile, bridge: Bridge, start: float) -> np.ndarray:
 
     out = np.full(2, np.nan)
     deck = road.segment(start, start + bridge.length)
-    values = iri(deck, segment_length=bridge.span).iri if bridge.n_spans > 1 else [iri(deck)]
+    values = iri(deck, segment_length=bridge.span).segment_iri
     out[: bridge.n_spans] = np.asarray(values, dtype=float)[: bridge.n_spans]
     return out
 

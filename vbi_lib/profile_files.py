@@ -1,0 +1,359 @@
+"""Reading measured road profiles from files: two-column text and the ERD v2 format.
+
+Two readers turn a profiler's output into a :class:`vbi_lib.Profile` (stations and elevations
+in metres):
+
+* :func:`read_profile`: a two-column text file (station, elevation) in a unit the caller names,
+  such as the study's I-76 deck profiles (inches) or a survey in metres;
+* :func:`read_erd`: the ERD v2 text layout written by inertial profilers, ProVAL and the
+  RoadRuf tools (UMTRI, Sayers and Karamihas), with one profile per channel (wheel path).
+
+Both check the whole file before making a profile: a malformed file raises
+:class:`ProfileFileError` (a ``ValueError``) naming the file, the line and the fault, and
+nothing is half read.  No equation of the study is involved; the sampling the study asks of a
+profile is its equation (32), :func:`vbi_lib.profiles.max_sample_spacing`.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from . import _validation as check
+from .profiles import Profile
+
+#: Length units accepted by name by the readers [m per unit].
+LENGTH_UNITS = {
+    "m": 1.0,
+    "mm": 1e-3,
+    "cm": 1e-2,
+    "km": 1e3,
+    "in": 0.0254,
+    "inch": 0.0254,
+    "inches": 0.0254,
+    "ft": 0.3048,
+    "feet": 0.3048,
+    "foot": 0.3048,
+    "mi": 1609.344,
+}
+
+
+class ProfileFileError(ValueError):
+    """A profile file that cannot be read; the message names the file, the line and the fault."""
+
+    def __init__(self, path: str | Path, line: int | None, problem: str) -> None:
+        where = f"{path}" if line is None else f"{path}, line {line}"
+        super().__init__(f"{where}: {problem}")
+        self.path = str(path)
+        self.line = line
+        self.problem = problem
+
+
+def _length_unit(name: str, unit: float | str) -> float:
+    """Metres per unit from a factor (``vbi_lib.units.inch``) or a name (``"in"``)."""
+    if isinstance(unit, str):
+        key = unit.strip().lower()
+        if key not in LENGTH_UNITS:
+            raise ValueError(
+                f"{name}={unit!r} is not a known length unit; use one of "
+                f"{', '.join(sorted(LENGTH_UNITS))} or a factor in metres (vbi_lib.units.inch)"
+            )
+        return LENGTH_UNITS[key]
+    return check.positive(name, unit)
+
+
+_SPLIT = re.compile(r"\s*[,;\t]\s*|\s+")
+
+
+def _number(path: Path, line: int, cell: str, what: str) -> float:
+    try:
+        value = float(cell)
+    except ValueError:
+        raise ProfileFileError(path, line, f"{what} {cell!r} is not a number") from None
+    if not math.isfinite(value):
+        raise ProfileFileError(path, line, f"{what} {cell!r} is not a finite number")
+    return value
+
+
+def read_profile(
+    path: str | Path,
+    unit: float | str,
+    elevation_unit: float | str | None = None,
+    skip_rows: int = 0,
+    name: str | None = None,
+) -> Profile:
+    """Read a measured profile from a two-column text file: station, elevation.
+
+    Cells are separated by commas, semicolons, tabs or spaces; blank lines and lines starting
+    with ``#`` are ignored.  Stations must increase strictly.  The whole file is checked
+    before a :class:`Profile` is made, so a bad file raises :class:`ProfileFileError` (a
+    ``ValueError``) naming the file, the line and the fault, and nothing is half read.
+
+    Parameters
+    ----------
+    path
+        The file.
+    unit
+        Length unit of the stations: a factor in metres (``vbi_lib.units.inch``) or a name
+        (``"in"``, ``"ft"``, ``"m"``, ``"mm"``, ...).  The study's I-76 files are in inches.
+    elevation_unit
+        Unit of the elevations if it differs from ``unit``.
+    skip_rows
+        Lines to skip at the top (a header row).
+    name
+        Name of the profile; the file's stem by default.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> folder = pathlib.Path(tempfile.mkdtemp())
+    >>> _ = (folder / "deck.csv").write_text("0,0\\n1,0.5\\n2,0.25\\n")
+    >>> p = read_profile(folder / "deck.csv", unit="in")
+    >>> p.x.tolist(), p.elevation.tolist()
+    ([0.0, 0.0254, 0.0508], [0.0, 0.0127, 0.00635])
+    >>> _ = (folder / "bad.csv").write_text("0,0\\n1,x\\n")
+    >>> read_profile(folder / "bad.csv", unit="in")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    vbi_lib.profile_files.ProfileFileError: .../bad.csv, line 2: elevation 'x' is not a number
+    """
+    path = Path(path)
+    scale_x = _length_unit("unit", unit)
+    scale_z = scale_x if elevation_unit is None else _length_unit("elevation_unit", elevation_unit)
+    if int(skip_rows) != skip_rows or skip_rows < 0:
+        raise ValueError(f"skip_rows={skip_rows!r} must be a whole number >= 0")
+    try:
+        text = path.read_text(encoding="utf-8-sig")  # tolerate a byte-order mark
+    except OSError as exc:
+        raise ProfileFileError(path, None, f"cannot be read ({exc.strerror or exc})") from None
+    except UnicodeDecodeError:
+        raise ProfileFileError(path, None, "is not a text file") from None
+    stations: list[float] = []
+    heights: list[float] = []
+    lines: list[int] = []
+    for number, raw in enumerate(text.splitlines(), start=1):
+        line = raw.strip()
+        if number <= skip_rows or not line or line.startswith("#"):
+            continue
+        cells = _SPLIT.split(line)
+        if cells and cells[-1] == "":
+            cells.pop()  # a trailing separator
+        if len(cells) != 2:
+            raise ProfileFileError(
+                path, number, f"expected 2 columns (station, elevation), found {len(cells)}"
+            )
+        x = _number(path, number, cells[0], "station")
+        z = _number(path, number, cells[1], "elevation")
+        if stations and x <= stations[-1]:
+            raise ProfileFileError(
+                path,
+                number,
+                f"station {cells[0]} does not increase (line {lines[-1]} has {stations[-1]:g}); "
+                "stations must increase strictly",
+            )
+        stations.append(x)
+        heights.append(z)
+        lines.append(number)
+    if len(stations) < 2:
+        raise ProfileFileError(
+            path, None, f"holds {len(stations)} sample(s); a profile needs at least two"
+        )
+    return Profile(
+        np.asarray(stations) * scale_x,
+        np.asarray(heights) * scale_z,
+        name=path.stem if name is None else name,
+    )
+
+
+@dataclass(frozen=True, eq=False)
+class ErdFile:
+    """A profile file in the ERD v2 text format: one :class:`Profile` per channel.
+
+    Attributes
+    ----------
+    channels
+        One profile per channel (stations from 0, SI units), named by ``SHORTNAM``.
+    header
+        Every keyword line as ``{keyword: value text}`` (e.g. ``header["IRILWP"]``).
+    interval
+        Sample interval [m].
+    path
+        The file read.
+    """
+
+    channels: tuple[Profile, ...]
+    header: dict[str, str]
+    interval: float
+    path: str
+
+    @property
+    def title(self) -> str:
+        """The ``TITLE`` keyword (empty when absent)."""
+        return self.header.get("TITLE", "")
+
+    def __len__(self) -> int:
+        return len(self.channels)
+
+    def __getitem__(self, index: int) -> Profile:
+        return self.channels[index]
+
+    def __repr__(self) -> str:
+        names = ", ".join(repr(c.name) for c in self.channels)
+        first = self.channels[0]
+        return (
+            f"ErdFile({self.title!r}: {len(self.channels)} channel(s) {names}, "
+            f"{first.x.size} samples every {self.interval * 1e3:.1f} mm over {first.length:.1f} m)"
+        )
+
+
+def read_erd(path: str | Path) -> ErdFile:
+    """Read a profile file in the ERD v2 text format (profilers, ProVAL, the RoadRuf tools).
+
+    Layout: line 1 ``ERDFILEV2.00``; line 2, comma separated, the number of channels, the
+    number of samples, two fields not used here, the storage code (5: text rows) and the
+    sample interval (in ``XUNITS``); keyword lines (8-character keyword, then the value;
+    ``UNITSNAM`` and ``SHORTNAM`` hold one 8-character field per channel) up to ``END``; then
+    one row per sample with one elevation per channel.  Distance units ``XUNITS`` and
+    elevation units ``UNITSNAM`` are converted to metres (m, mm, cm, in, ft).
+
+    Anything else (another version, a binary layout, a missing ``END``, a wrong number of
+    rows or columns, a non-numeric cell, an unknown unit) raises :class:`ProfileFileError`
+    naming the file and the line; nothing is half read.
+
+    Returns
+    -------
+    ErdFile
+        ``channels`` (one :class:`Profile` per wheel path), ``header`` and ``interval`` [m].
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> f = pathlib.Path(tempfile.mkdtemp()) / "run.erd"
+    >>> _ = f.write_text(
+    ...     "ERDFILEV2.00\\n1, 3, -1, 1, 5, 0.25, -1,\\nTITLE   demo\\nSHORTNAMLeft\\n"
+    ...     "UNITSNAMmm\\nXUNITS  m\\nEND\\n0.0\\n1.5\\n-0.5\\n"
+    ... )
+    >>> erd = read_erd(f)
+    >>> erd
+    ErdFile('demo': 1 channel(s) 'Left', 3 samples every 250.0 mm over 0.5 m)
+    >>> erd[0].elevation.tolist()
+    [0.0, 0.0015, -0.0005]
+    """
+    path = Path(path)
+    try:
+        lines = path.read_text(encoding="utf-8-sig").splitlines()
+    except OSError as exc:
+        raise ProfileFileError(path, None, f"cannot be read ({exc.strerror or exc})") from None
+    except UnicodeDecodeError:
+        raise ProfileFileError(
+            path, None, "is not a text file (binary ERD layouts are not supported)"
+        ) from None
+    if not lines or lines[0].strip()[:12] != "ERDFILEV2.00":
+        first = lines[0].strip()[:20] if lines else ""
+        raise ProfileFileError(path, 1, f"starts with {first!r}, not 'ERDFILEV2.00' (ERD v2)")
+    if len(lines) < 2:
+        raise ProfileFileError(path, 2, "the ERD counts line is missing")
+    fields = [f for f in (c.strip() for c in lines[1].split(",")) if f]
+    if len(fields) < 6:
+        raise ProfileFileError(
+            path, 2, f"expected at least 6 comma-separated fields, found {len(fields)}"
+        )
+    counts = [_number(path, 2, f, f"field {i + 1}") for i, f in enumerate(fields[:6])]
+    n_channels, n_samples, storage, step = counts[0], counts[1], counts[4], counts[5]
+    if n_channels != int(n_channels) or n_channels < 1:
+        raise ProfileFileError(path, 2, f"number of channels {fields[0]!r} must be >= 1")
+    if n_samples != int(n_samples) or n_samples < 2:
+        raise ProfileFileError(path, 2, f"number of samples {fields[1]!r} must be >= 2")
+    if storage != 5:
+        raise ProfileFileError(
+            path, 2, f"storage code {fields[4]!r} is not 5 (text rows); this layout is unknown"
+        )
+    if step <= 0:
+        raise ProfileFileError(path, 2, f"sample interval {fields[5]!r} must be > 0")
+    n_channels, n_samples = int(n_channels), int(n_samples)
+
+    header: dict[str, str] = {}
+    per_channel: dict[str, list[str]] = {}
+    end = None
+    for index in range(2, len(lines)):
+        raw = lines[index].rstrip("\r\n")
+        key = raw[:8].strip().upper()
+        if key == "END":
+            end = index
+            break
+        if not key:
+            continue
+        value = raw[8:]
+        header[key] = value.strip()
+        if key in ("UNITSNAM", "SHORTNAM"):
+            fixed = [value[8 * i : 8 * i + 8].strip() for i in range(n_channels)]
+            per_channel[key] = fixed if all(fixed) else value.split()
+    if end is None:
+        raise ProfileFileError(path, len(lines), "no 'END' line closes the ERD header")
+
+    def unit_of(text: str, line_key: str) -> float:
+        factor = LENGTH_UNITS.get(text.strip().lower())
+        if factor is None:
+            raise ProfileFileError(
+                path,
+                _key_line(lines, line_key),
+                f"{line_key} unit {text!r} is not known; use one of m, mm, cm, in, ft",
+            )
+        return factor
+
+    if "XUNITS" not in header:
+        raise ProfileFileError(path, end + 1, "the header has no XUNITS (distance unit)")
+    scale_x = unit_of(header["XUNITS"].split()[0] if header["XUNITS"] else "", "XUNITS")
+    units = per_channel.get("UNITSNAM")
+    if units is None or len(units) < n_channels:
+        raise ProfileFileError(
+            path, end + 1, f"UNITSNAM must give an elevation unit for each of {n_channels} channels"
+        )
+    scales = [unit_of(units[i], "UNITSNAM") for i in range(n_channels)]
+    names = per_channel.get("SHORTNAM", [])
+    names = [names[i] if i < len(names) else f"channel {i + 1}" for i in range(n_channels)]
+
+    data = np.empty((n_samples, n_channels))
+    row = 0
+    for index in range(end + 1, len(lines)):
+        line = lines[index].strip()
+        if not line:
+            continue
+        number = index + 1
+        if row == n_samples:
+            raise ProfileFileError(
+                path, number, f"more data rows than the {n_samples} samples the header declares"
+            )
+        cells = _SPLIT.split(line)
+        if cells and cells[-1] == "":
+            cells.pop()
+        if len(cells) != n_channels:
+            raise ProfileFileError(
+                path, number, f"expected {n_channels} values (one per channel), found {len(cells)}"
+            )
+        for j, cell in enumerate(cells):
+            data[row, j] = _number(path, number, cell, f"channel {j + 1} value")
+        row += 1
+    if row < n_samples:
+        raise ProfileFileError(
+            path, len(lines), f"only {row} data rows; the header declares {n_samples} samples"
+        )
+    interval = step * scale_x
+    x = interval * np.arange(n_samples)
+    channels = tuple(Profile(x, data[:, j] * scales[j], name=names[j]) for j in range(n_channels))
+    return ErdFile(channels, header, interval, str(path))
+
+
+def _key_line(lines: list[str], key: str) -> int:
+    """1-based number of the header line holding ``key``."""
+    for index, line in enumerate(lines):
+        if line[:8].strip().upper() == key:
+            return index + 1
+    return 0
+
+
+__all__ = ["LENGTH_UNITS", "ErdFile", "ProfileFileError", "read_erd", "read_profile"]
