@@ -6,8 +6,6 @@ model-specific tests take the cases they need from here.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 import vbi_lib as vbi
@@ -61,30 +59,3 @@ def build_case(name: str) -> tuple[vbi.Bridge, vbi.Vehicle, vbi.Profile, float, 
     approach = 20.0
     road = rough_profile(approach + bridge.length + 1.0, 1 * u.inch, 300e-6, seed=n_spans)
     return bridge, vehicle, road, 720 * u.inch, approach
-
-
-def fryba_midspan(alpha: float, tau: np.ndarray, terms: int) -> np.ndarray:
-    """Undamped midspan deflection / (P L^3 / 48 EI) under a moving force (Fryba 1972).
-
-    ``tau`` is the fraction of the crossing time; odd modes up to ``terms``.
-    """
-    w = np.zeros_like(tau)
-    for n in range(1, terms + 1, 2):
-        s = math.sin(n * math.pi / 2)
-        x = n * math.pi * tau
-        a = alpha / n  # the speed parameter of mode n
-        if abs(a - 1.0) < 1e-12:  # resonance: the limit of the expression below
-            shape = (np.sin(x) - x * np.cos(x)) / 2
-        else:
-            shape = (np.sin(x) - a * np.sin(x / a)) / (1 - a**2)
-        w += 96 / (n**4 * math.pi**4) * s * shape
-    return w
-
-
-def fryba_one_mode_peak(alpha: float) -> float:
-    """Peak of (sin(w t) - alpha sin(w1 t)) / (1 - alpha^2) while the force is on the span."""
-    t = np.linspace(0.0, 1.0, 400_001)  # fraction of the crossing time
-    wt = np.pi * t  # omega t, omega = pi v / L
-    if abs(alpha - 1.0) < 1e-12:
-        return float(np.max((np.sin(wt) - wt * np.cos(wt)) / 2))
-    return float(np.max((np.sin(wt) - alpha * np.sin(wt / alpha)) / (1 - alpha**2)))

@@ -10,6 +10,7 @@ from problems import flat
 
 import vbi_lib as vbi
 from vbi_lib.beam_modes import beam_modes, propped_cantilever_roots, static_deflection_line
+from vbi_lib.closed_forms import point_load_statics
 
 
 def test_propped_cantilever_roots_match_published_values() -> None:
@@ -65,26 +66,12 @@ def test_slope_is_the_derivative_of_the_shape() -> None:
 
 
 # ---------------------------------------------------------------------------- statics
-def _two_span_midspan_influence(a: float, span: float, ei: float) -> float:
-    """Exact deflection at midspan of span 1 under a unit load at ``a`` (compatibility)."""
-    length = 2 * span
-
-    def flex(x: float, load: float) -> float:  # simple beam of length 2L, downward
-        if x > load:
-            x, load = length - x, length - load
-        b = length - load
-        return b * x * (length**2 - b**2 - x**2) / (6 * length * ei)
-
-    reaction = flex(span, a) / flex(span, span)
-    return flex(0.5 * span, a) - reaction * flex(0.5 * span, span)
-
-
 def test_static_deflection_converges_to_the_exact_beam_values() -> None:
     force = 1e5
     one = vbi.Bridge(20.0, 1, 3e9, 4000.0)
     two = vbi.Bridge(20.0, 2, 3e9, 4000.0)
-    exact_one = force * one.span**3 / (48 * one.EI)  # (38)
-    exact_two = 23 * force * two.span**3 / (1536 * two.EI)  # (64)
+    exact_one = point_load_statics(10.0, 10.0, 20.0, 3e9, 1, force).deflection  # (38)
+    exact_two = point_load_statics(10.0, 10.0, 20.0, 3e9, 2, force).deflection  # (64)
     errors = []
     for n in (1, 3, 9, 27, 81):
         d1 = static_deflection_line(one, force, n, [10.0])[0, 0]
@@ -102,7 +89,7 @@ def test_largest_static_deflection_is_the_maximum_of_the_influence_line() -> Non
     truck = vbi.Vehicle(1e4, 1e6, 0.0)
     run = vbi.simulate(bridge, truck, flat(bridge, 5.0, 0.5), 10.0, 5.0, model="modal", modes=60)
     a = np.linspace(0.0, 20.0, 20001)
-    exact = max(_two_span_midspan_influence(x, 20.0, 3e9) for x in a) * truck.weight
+    exact = point_load_statics(10.0, a, 20.0, 3e9, 2, truck.weight).deflection.max()
     assert run.static_deflection == pytest.approx(exact, rel=2e-5)
     # the maximum lies off midspan and exceeds 23 P L^3 / 1536 EI by about a quarter percent
     assert exact / bridge.exact_static_deflection(truck.weight) == pytest.approx(1.0025, abs=5e-4)
