@@ -270,6 +270,25 @@ def test_the_method_is_chosen_and_reported() -> None:
     assert repr(result[0]).startswith("RecordDAF(DAF 1.000 by influence-line: peak")
 
 
+def test_each_event_can_have_its_own_axles_and_speed() -> None:
+    """Two trucks, two records: each fitted with its own axle layout and speed."""
+    span = 25.0
+    layouts = [((0.0,), (1.0,)), ((0.0, 3.6, 4.9), (0.4, 1.0, 1.0))]
+    speeds = [18.0, 27.0]
+    records = [
+        static_record(span, v, 12.5, 1, offsets, loads, tail=4.0)[1][:1200]
+        for (offsets, loads), v in zip(layouts, speeds, strict=True)
+    ]
+    axles = [mon.Axles(tuple(np.diff(offsets)), loads) for offsets, loads in layouts]
+    result = mon.daf_from_record(
+        np.array(records), FS, speed=speeds, span=span, axles=axles, response="stress"
+    )
+    np.testing.assert_allclose(result.daf, 1.0, atol=0.005)
+    assert "3 axles" in result[1].how_chosen and "one axle" in result[0].how_chosen
+    with pytest.raises(ValueError, match="axles has 1 values for 2 events"):
+        mon.daf_from_record(records, FS, span=span, axles=axles[:1], response="stress")
+
+
 def test_an_influence_line_result_plots_its_fit() -> None:
     import matplotlib
 

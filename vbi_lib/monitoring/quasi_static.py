@@ -155,9 +155,9 @@ def fit_estimate(
         if alpha**2 > 0.005:
             gain = 1.0 / (1.0 - min(alpha, 0.9) ** 2)
             notes.append(
-                f"speed parameter v / (2 f1 L) = {alpha:.2g}: the slow forced response is "
-                f"itself amplified by about 1 / (1 - alpha^2) = {gain:.3g} and counted as "
-                "static, so the DAF reads low by about as much"
+                f"speed parameter v / (2 f1 L) = {alpha:.2g}: a beam's slow forced response "
+                f"is itself amplified by about 1 / (1 - alpha^2) = {gain:.3g}, which the fit "
+                "counts as static: the DAF may read low by about as much"
             )
         if first / loading < MIN_FREQUENCY_RATIO:
             doubtful = True
