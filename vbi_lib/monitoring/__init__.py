@@ -45,8 +45,10 @@ from .influence import RESPONSES, SPEED_BOUNDS, Axles, influence_line
 from .load_tests import daf_from_load_test
 from .record_results import RecordDAF, RecordDAFs
 from .records import (
+    MAX_CRAWL_RESIDUAL,
     MAX_EVENT_PASSAGES,
     MAX_FIT_RESIDUAL,
+    MAX_FIT_RESIDUAL_SPEED_SEARCHED,
     MAX_PLAUSIBLE_DAF,
     MIN_EVENT_SNR,
     MIN_FREQUENCY_RATIO,
@@ -59,8 +61,10 @@ from .synthetic import record_from_crossing
 __all__ = [
     "DEFAULT_FILTER_ORDER",
     "DISPLACEMENT_INERTIA_COEFFICIENT",
+    "MAX_CRAWL_RESIDUAL",
     "MAX_EVENT_PASSAGES",
     "MAX_FIT_RESIDUAL",
+    "MAX_FIT_RESIDUAL_SPEED_SEARCHED",
     "MAX_PLAUSIBLE_DAF",
     "MIN_CUTOFF_PERIODS",
     "MIN_EVENT_SNR",

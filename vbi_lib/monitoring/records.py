@@ -32,9 +32,12 @@ otherwise.  Every result says which method was used and why, and is flagged ``do
 * a filter on a kinked record, a cut-off squeezed between the two frequencies, or a
   quasi-static event longer than :data:`MAX_EVENT_PASSAGES` passages (drift, several
   vehicles);
-* a fit whose slow residual exceeds :data:`MAX_FIT_RESIDUAL` (wrong span, section, number of
-  spans, or several vehicles), a fitted speed on the edge of its range, or a first frequency
-  less than :data:`MIN_FREQUENCY_RATIO` times the loading frequency;
+* a fit whose slow residual exceeds :data:`MAX_FIT_RESIDUAL`,
+  :data:`MAX_FIT_RESIDUAL_SPEED_SEARCHED` when the speed was searched (wrong span, section or
+  number of spans, several vehicles, a truck bouncing through a short span) or
+  :data:`MAX_CRAWL_RESIDUAL` for a crawl run (another vehicle or path); a fitted speed on the
+  edge of its range; a first frequency less than :data:`MIN_FREQUENCY_RATIO` times the
+  loading frequency (not for a crawl run);
 * noise that can raise the peak by more than :data:`NOISE_PEAK_TOLERANCE`, or a DAF above
   :data:`MAX_PLAUSIBLE_DAF`.
 
@@ -65,7 +68,9 @@ from .influence import (
     crawl_shape,
 )
 from .quasi_static import (
+    MAX_CRAWL_RESIDUAL,
     MAX_FIT_RESIDUAL,
+    MAX_FIT_RESIDUAL_SPEED_SEARCHED,
     MIN_FREQUENCY_RATIO,
     MIN_SAMPLES_PER_CYCLE,
     check_sampling,
@@ -470,8 +475,10 @@ def daf_from_record(
 
 
 __all__ = [
+    "MAX_CRAWL_RESIDUAL",
     "MAX_EVENT_PASSAGES",
     "MAX_FIT_RESIDUAL",
+    "MAX_FIT_RESIDUAL_SPEED_SEARCHED",
     "MAX_PLAUSIBLE_DAF",
     "MIN_EVENT_SNR",
     "MIN_FREQUENCY_RATIO",
