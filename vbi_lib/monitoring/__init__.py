@@ -1,4 +1,4 @@
-r"""Measuring amplification in the field: the public namespace of three small modules.
+r"""Measuring amplification in the field: the public namespace of a few small modules.
 
 ``from vbi_lib import monitoring as mon`` gives every tool of the study's chapter on in-situ
 measurement (chapter 11):
@@ -7,11 +7,16 @@ measurement (chapter 11):
   a strain gauge (equations 19-31): ``DAF_d = A_v + 48 r / pi^4``, ``DAF_s = A_v + 4 r / pi^2``
   for the first mode, :func:`displacement_daf`, :func:`strain_daf`,
   :func:`extra_amplification_ratio`;
-* :mod:`~vbi_lib.monitoring.records`: the DAF of recorded events in service, estimated by a
-  zero-phase low-pass filter (:func:`daf_from_record`, one :class:`RecordDAFs` result for
-  one record or many);
-* :mod:`~vbi_lib.monitoring.filtering`: the filter and the first-frequency estimate it uses
-  (:func:`lowpass`, :func:`estimate_first_frequency`);
+* :mod:`~vbi_lib.monitoring.records`: the DAF of recorded events in service
+  (:func:`daf_from_record`), the peak over a quasi-static estimate made by a zero-phase
+  low-pass filter (smooth records), a fitted influence line (kinked strain records) or a
+  crawl run; one :class:`RecordDAFs` result (:mod:`~vbi_lib.monitoring.record_results`)
+  for one record or many;
+* :mod:`~vbi_lib.monitoring.influence`: the influence line of a gauge's response to a
+  vehicle's axles (:func:`influence_line`, :class:`Axles`) and its least-squares fit to a
+  record;
+* :mod:`~vbi_lib.monitoring.filtering`: the filter, the first-frequency estimate and the
+  noise level (:func:`lowpass`, :func:`estimate_first_frequency`, :func:`noise_std`);
 * :mod:`~vbi_lib.monitoring.synthetic`: gauge records made from simulated crossings, with
   noise and drift (:func:`record_from_crossing`);
 * :mod:`~vbi_lib.monitoring.load_tests`: the DAF per gauge, speed and run of a load test with
@@ -25,6 +30,7 @@ from .filtering import (
     MIN_CUTOFF_PERIODS,
     estimate_first_frequency,
     lowpass,
+    noise_std,
 )
 from .inertia import (
     DISPLACEMENT_INERTIA_COEFFICIENT,
@@ -35,16 +41,40 @@ from .inertia import (
     plot_extra_amplification,
     strain_daf,
 )
+from .influence import RESPONSES, SPEED_BOUNDS, Axles, influence_line
 from .load_tests import daf_from_load_test
-from .records import MIN_SAMPLES_PER_CYCLE, RecordDAF, RecordDAFs, daf_from_record
+from .record_results import RecordDAF, RecordDAFs
+from .records import (
+    MAX_CRAWL_RESIDUAL,
+    MAX_EVENT_PASSAGES,
+    MAX_FIT_RESIDUAL,
+    MAX_FIT_RESIDUAL_SPEED_SEARCHED,
+    MAX_PLAUSIBLE_DAF,
+    MIN_EVENT_SNR,
+    MIN_FREQUENCY_RATIO,
+    MIN_SAMPLES_PER_CYCLE,
+    NOISE_PEAK_TOLERANCE,
+    daf_from_record,
+)
 from .synthetic import record_from_crossing
 
 __all__ = [
     "DEFAULT_FILTER_ORDER",
     "DISPLACEMENT_INERTIA_COEFFICIENT",
+    "MAX_CRAWL_RESIDUAL",
+    "MAX_EVENT_PASSAGES",
+    "MAX_FIT_RESIDUAL",
+    "MAX_FIT_RESIDUAL_SPEED_SEARCHED",
+    "MAX_PLAUSIBLE_DAF",
     "MIN_CUTOFF_PERIODS",
+    "MIN_EVENT_SNR",
+    "MIN_FREQUENCY_RATIO",
     "MIN_SAMPLES_PER_CYCLE",
+    "NOISE_PEAK_TOLERANCE",
+    "RESPONSES",
+    "SPEED_BOUNDS",
     "STRAIN_INERTIA_COEFFICIENT",
+    "Axles",
     "RecordDAF",
     "RecordDAFs",
     "daf_from_load_test",
@@ -53,7 +83,9 @@ __all__ = [
     "estimate_first_frequency",
     "extra_amplification_ratio",
     "inertia_ratio",
+    "influence_line",
     "lowpass",
+    "noise_std",
     "plot_extra_amplification",
     "record_from_crossing",
     "strain_daf",

@@ -8,8 +8,10 @@ Two signal-processing steps behind :func:`vbi_lib.monitoring.daf_from_record`:
 * :func:`estimate_first_frequency`: the first natural frequency from the free vibration at
   the end of a record, the peak of its Welch power spectral density (``scipy.signal.welch``).
 
-Both refuse records with gaps (NaN or infinite samples), records too short for the filter to
-settle, and spectra without a clear peak, with a message that says what to do.
+and a robust estimate of a record's white-noise level (:func:`noise_std`).  The filter and
+the first-frequency estimate refuse records with gaps (NaN or infinite samples), records too
+short for the filter to settle, and spectra without a clear peak, with a message that says
+what to do.
 """
 
 from __future__ import annotations
@@ -114,14 +116,15 @@ def estimate_first_frequency(
     power spectral density estimated with ``scipy.signal.welch`` (Hann segments of half the
     tail, half overlapping, zero-padded 16 times); the frequency of the largest peak above two
     frequency bins of a segment is returned, refined by a parabola through the peak and its
-    neighbours (on the log power).
+    neighbours (on the log power).  A spectrum largest at its lowest usable frequency is a
+    trend (drift, the end of the passage), not a vibration, and is refused.
 
     Raises
     ------
     ValueError
-        Tail shorter than 64 samples, or no peak that stands twenty times above the median
-        power (white noise alone stays below 8; no free vibration to measure: pass the
-        frequency yourself).
+        Tail shorter than 64 samples, no peak that stands twenty times above the median
+        power (white noise alone stays below 8), or power largest at the lowest usable
+        frequency (no free vibration to measure: pass the frequency yourself).
 
     Examples
     --------
@@ -156,6 +159,12 @@ def estimate_first_frequency(
             "spectral peak is less than twenty times the median power); pass "
             "first_frequency_hz"
         )
+    if index == np.flatnonzero(usable)[0] or power[index - 1] >= power[index]:
+        raise ValueError(
+            "no clear natural frequency in the record's free-vibration tail (its power is "
+            f"largest at the lowest frequency it resolves, {freq[index]:.3g} Hz: a trend, not "
+            "a vibration); pass first_frequency_hz"
+        )
     if 0 < index < freq.size - 1:
         a, b, c = np.log(power[index - 1 : index + 2] + 1e-300)
         denominator = a - 2.0 * b + c
@@ -164,4 +173,55 @@ def estimate_first_frequency(
     return float(freq[index])
 
 
-__all__ = ["DEFAULT_FILTER_ORDER", "MIN_CUTOFF_PERIODS", "estimate_first_frequency", "lowpass"]
+def noise_std(signal: np.ndarray) -> float:
+    """Standard deviation of a record's white noise, from its second differences (robust).
+
+    White noise of standard deviation ``s`` gives second differences of standard deviation
+    ``sqrt(6) s``, while a smooth signal sampled many times per cycle gives almost none; the
+    median absolute deviation (times 1.4826, its ratio to the standard deviation of a normal
+    distribution) ignores the few large differences at kinks and at the crests of fast
+    vibrations.  A record sampled ten times per cycle of a vibration of amplitude ``A`` reads
+    about ``0.1 A`` from the vibration alone: an upper bound on the noise, not an estimate.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> t = np.arange(0, 20, 0.005)
+    >>> noise = np.random.default_rng(0).standard_normal(t.size)
+    >>> noisy = np.sin(2 * np.pi * 0.5 * t) + 0.01 * noise
+    >>> round(noise_std(noisy), 3)
+    0.01
+    """
+    x = _record("signal", signal)
+    if x.size < 3:
+        raise ValueError(f"the record has {x.size} samples; the noise level needs at least 3")
+    second = np.diff(x, 2)
+    deviation = np.median(np.abs(second - np.median(second)))
+    return float(1.4826 * deviation / math.sqrt(6.0))
+
+
+def without_straight_baseline(values: np.ndarray, fraction: float) -> np.ndarray:
+    """``values`` minus the straight line through the medians of its two end fractions.
+
+    The line passes through the median of the first and of the last ``fraction`` of the
+    samples (at least one each), placed at the middle of each; ``fraction = 0`` returns a
+    copy unchanged.  Offsets and a steady drift of a gauge go; an event in between stays.
+    """
+    values = np.asarray(values, dtype=float)
+    if fraction <= 0:
+        return values.copy()
+    n_end = max(1, int(round(fraction * values.size)))
+    t = np.arange(values.size, dtype=float)
+    t0, t1 = (n_end - 1) / 2.0, values.size - 1 - (n_end - 1) / 2.0
+    y0, y1 = np.median(values[:n_end]), np.median(values[-n_end:])
+    return values - (y0 + (y1 - y0) * (t - t0) / (t1 - t0))
+
+
+__all__ = [
+    "DEFAULT_FILTER_ORDER",
+    "MIN_CUTOFF_PERIODS",
+    "estimate_first_frequency",
+    "lowpass",
+    "noise_std",
+    "without_straight_baseline",
+]

@@ -1,354 +1,223 @@
-r"""DAF of recorded events in service, estimated by low-pass filtering.
+r"""DAF of recorded events in service: the peak over a quasi-static estimate (study eq. 17).
 
-A gauge on a bridge in service records every truck that crosses; no crawl run gives the
-static response.  :func:`daf_from_record` estimates the quasi-static part of each recorded
-event with a zero-phase Butterworth low-pass (:func:`vbi_lib.monitoring.lowpass`) and
-returns ``DAF = peak / quasi-static peak``, the study's definition (17) with the filtered
-record standing for :math:`R_{sta}`.  The cut-off must lie between the loading frequency
-``f_load = speed / span`` and the first natural frequency ``f_1``; by default it is
-:math:`\sqrt{f_{load} f_1}`, midway on a log scale.  When the loading is faster than the first
-frequency no cut-off separates them and the estimate is biased high: the result says so
-(``doubtful``, and a ``UserWarning``).
+A gauge on a bridge in service records every vehicle that crosses; no crawl run gives the
+static response :math:`R_{sta}` of the study's definition (17), so it is estimated from the
+record.  :func:`daf_from_record` returns ``DAF = peak / quasi-static peak`` with one of three
+estimates (the study's section on operational monitoring and load testing):
 
-Limits: each record must start before the vehicle arrives and end with the bridge vibrating
-freely after it has left; one vehicle per event.
+``"filter"``
+    The record low-passed with a zero-phase Butterworth filter
+    (:func:`vbi_lib.monitoring.lowpass`), the method the study describes.  The cut-off must
+    lie between the loading frequency ``f_load = speed / span`` and the first natural
+    frequency ``f_1``; by default :math:`\sqrt{f_{load} f_1}`.  Good for smooth records
+    (deflection).  It rounds off a kink: a strain, stress or moment record has one wherever
+    an axle passes the gauge, and there the filtered peak is too low and the DAF several per
+    cent too high even without any vibration.  When the loading is as fast as the bridge no
+    cut-off separates them and the DAF is overestimated.
+``"influence-line"``
+    The beam's influence line of the response at the gauge, summed over the vehicle's axles,
+    fitted to the record by least squares over scale, baseline, arrival time and (if not
+    given) speed (:mod:`vbi_lib.monitoring.influence`; the bridge weigh-in-motion algorithm of
+    Moses 1979 with the axle loads in known ratios).  It keeps the kink; it needs the
+    geometry (span, number of spans, gauge section, axle spacings) and assumes ideal supports.
+``"crawl"``
+    A crawl run of the same vehicle (a load test), stretched to the record's speed, lined up
+    with it by least squares and used as it is (scale 1).
+
+``method="auto"`` takes the crawl run when one is given, the influence-line fit for a kinked
+record (``response`` strain, stress or moment) when the span is known, and the filter
+otherwise.  Every result says which method was used and why, and is flagged ``doubtful``
+(with a ``UserWarning``) when its assumptions are in doubt:
+
+* a filter on a kinked record, a cut-off squeezed between the two frequencies, or a
+  quasi-static event longer than :data:`MAX_EVENT_PASSAGES` passages (drift, several
+  vehicles);
+* a fit whose slow residual exceeds :data:`MAX_FIT_RESIDUAL`,
+  :data:`MAX_FIT_RESIDUAL_SPEED_SEARCHED` when the speed was searched (wrong span, section or
+  number of spans, several vehicles, a truck bouncing through a short span) or
+  :data:`MAX_CRAWL_RESIDUAL` for a crawl run (another vehicle or path); a fitted speed on the
+  edge of its range; a first frequency less than :data:`MIN_FREQUENCY_RATIO` times the
+  loading frequency (not for a crawl run);
+* noise that can raise the peak by more than :data:`NOISE_PEAK_TOLERANCE`, or a DAF above
+  :data:`MAX_PLAUSIBLE_DAF`.
+
+Both peaks are read on the record's own clock, so sampling clips a kinked peak in the record
+and in the fitted estimate alike.  A record that cannot hold an event (NaN or infinite
+samples, a constant record, an event that does not stand :data:`MIN_EVENT_SNR` times above the
+noise) raises a ``ValueError`` rather than returning a number.
+
+Limits: each record must start before the vehicle arrives and end after it has left (with
+free vibration after it for the filter's first-frequency estimate); one vehicle per event.
 """
 
 from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Iterator, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Sequence
 
 import numpy as np
-import pandas as pd
 
 from .. import _validation as check
-from .filtering import DEFAULT_FILTER_ORDER, _record, estimate_first_frequency, lowpass
-
-#: Fewest samples per period of the first natural frequency :func:`daf_from_record` accepts.
-#: Ten samples a cycle catch a sinusoid's crest to within ``1 - cos(18 deg)`` = 4.9 %.
-MIN_SAMPLES_PER_CYCLE = 10
-
-
-@dataclass(frozen=True, eq=False)
-class RecordDAF:
-    """One recorded event's DAF, estimated by low-pass filtering (an entry of RecordDAFs).
-
-    Attributes
-    ----------
-    daf
-        ``peak / quasi_static_peak`` [-].
-    peak
-        Extreme of the (baseline-corrected) record in its loading direction, with its sign.
-    quasi_static_peak
-        Extreme of the low-passed record, same direction and sign.
-    cutoff_hz
-        Cut-off of the low-pass [Hz].
-    first_frequency_hz
-        First natural frequency used [Hz] (given or estimated), or ``None`` if not needed.
-    loading_frequency_hz
-        ``speed / span`` [Hz], or ``None`` if speed and span were not given.
-    how_chosen
-        One sentence on where the cut-off and the first frequency came from, and any doubt.
-    doubtful
-        ``True`` when the cut-off does not separate the loading frequency from the first
-        frequency well (the estimate is biased; ``how_chosen`` says why).
-    sample_rate_hz
-        Sampling rate of the record [Hz].
-    response, quasi_static
-        The baseline-corrected record whose peak was taken (noise-filtered if asked) and its
-        low-passed copy, one value per sample (the record's unit); kept for :meth:`plot`.
-    """
-
-    daf: float
-    peak: float
-    quasi_static_peak: float
-    cutoff_hz: float
-    first_frequency_hz: float | None
-    loading_frequency_hz: float | None
-    how_chosen: str
-    doubtful: bool
-    sample_rate_hz: float
-    response: np.ndarray = field(repr=False)
-    quasi_static: np.ndarray = field(repr=False)
-
-    def summary(self) -> dict[str, object]:
-        """The scalar fields (everything but the two signals) as a dict, for a table row."""
-        return {name: getattr(self, name) for name in _SUMMARY_FIELDS}
-
-    def plot(self, ax=None, scale: float = 1.0, unit: str = ""):  # noqa: ANN001, ANN201
-        """The record, its quasi-static (low-passed) part and the two peaks against time.
-
-        ``scale`` multiplies the values and ``unit`` labels them (for example ``1e3`` and
-        ``"mm"`` for a displacement record in metres).
-        """
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 3.2))
-        time = np.arange(self.response.size) / self.sample_rate_hz
-        ax.plot(time, self.response * scale, color="0.55", lw=0.7, label="record")
-        ax.plot(
-            time,
-            self.quasi_static * scale,
-            "C3",
-            lw=1.6,
-            label=f"low-passed at {self.cutoff_hz:.3g} Hz",
-        )
-        ax.axhline(self.peak * scale, color="0.3", ls=":", lw=0.8, label="peak")
-        ax.axhline(self.quasi_static_peak * scale, color="C3", ls="--", lw=0.8)
-        flag = " (doubtful)" if self.doubtful else ""
-        ax.set_title(f"DAF {self.daf:.3f}{flag}", fontsize="medium")
-        ax.set_xlabel("time from the start of the record [s]")
-        ax.set_ylabel(f"record [{unit}]" if unit else "record")
-        ax.legend(fontsize="small", loc="best")
-        return ax
-
-    def __repr__(self) -> str:
-        f1 = "?" if self.first_frequency_hz is None else f"{self.first_frequency_hz:.3g} Hz"
-        fl = "?" if self.loading_frequency_hz is None else f"{self.loading_frequency_hz:.3g} Hz"
-        flag = ", doubtful" if self.doubtful else ""
-        return (
-            f"RecordDAF(DAF {self.daf:.3f}{flag}: peak {self.peak:.4g} / quasi-static "
-            f"{self.quasi_static_peak:.4g}; cut-off {self.cutoff_hz:.3g} Hz, f1 {f1}, "
-            f"loading {fl})"
-        )
-
-
-_SUMMARY_FIELDS = (
-    "daf",
-    "peak",
-    "quasi_static_peak",
-    "cutoff_hz",
-    "first_frequency_hz",
-    "loading_frequency_hz",
-    "doubtful",
-    "how_chosen",
+from .filtering import DEFAULT_FILTER_ORDER, _record, lowpass, noise_std
+from .influence import (
+    KINKED_RESPONSES,
+    Axles,
+    axle_shape,
+    check_response,
+    crawl_shape,
 )
+from .quasi_static import (
+    MAX_CRAWL_RESIDUAL,
+    MAX_FIT_RESIDUAL,
+    MAX_FIT_RESIDUAL_SPEED_SEARCHED,
+    MIN_FREQUENCY_RATIO,
+    MIN_SAMPLES_PER_CYCLE,
+    check_sampling,
+    event_width,
+    filter_estimate,
+    fit_estimate,
+)
+from .record_results import METHODS, RecordDAF, RecordDAFs
+
+#: An event's quasi-static peak must be at least this many times the record's noise level.
+MIN_EVENT_SNR = 5.0
+#: Largest rise of the peak that three noise standard deviations may cause before the estimate
+#: is flagged (pass ``noise_cutoff_hz`` to smooth the record first).
+NOISE_PEAK_TOLERANCE = 0.03
+#: Largest DAF reported without doubt: above it the record rarely holds one vehicle's passage.
+MAX_PLAUSIBLE_DAF = 2.0
+#: Longest quasi-static event the filter accepts without doubt, in passages ``span / speed``.
+MAX_EVENT_PASSAGES = 4.0
 
 
-@dataclass(frozen=True, eq=False)
-class RecordDAFs:
-    """What :func:`daf_from_record` returns for one record or many: one entry per event.
-
-    ``result[i]`` (or iterating) gives event ``i``'s :class:`RecordDAF`; ``result.item()``
-    gives the only event of a single record (and refuses a result holding several, so a
-    forgotten event is never read silently).  The per-event numbers are also arrays over the
-    events: ``result.daf``, ``result.doubtful``; :meth:`to_dataframe` puts every scalar field
-    in a table with one row per event.
-
-    Attributes
-    ----------
-    events
-        One :class:`RecordDAF` per event, in the order given.
-
-    Examples
-    --------
-    Two events: a 1 s half-sine pulse alone (true DAF 1.0), and with a 6 Hz ring of amplitude
-    0.3 cresting with it (true DAF 1.3):
-
-    >>> import numpy as np
-    >>> t = np.arange(-2.0, 8.0, 1 / 200.0)
-    >>> pulse = np.where((t > 0) & (t < 1), np.sin(np.pi * t), 0.0)
-    >>> ring = 0.3 * np.exp(-0.3 * np.abs(t - 0.5)) * np.cos(2 * np.pi * 6 * (t - 0.5))
-    >>> result = daf_from_record([pulse, pulse + ring], 200.0, speed=30.0, span=30.0,
-    ...                          first_frequency_hz=6.0)
-    >>> result
-    RecordDAFs(2 events: DAF 1.002, 1.302)
-    >>> len(result), result.daf.round(2).tolist()
-    (2, [1.0, 1.3])
-    >>> table = result.to_dataframe()
-    >>> table[["daf", "cutoff_hz", "doubtful"]].round(2)  # doctest: +NORMALIZE_WHITESPACE
-            daf  cutoff_hz  doubtful
-    event
-    0       1.0       2.45     False
-    1       1.3       2.45     False
-    """
-
-    events: tuple[RecordDAF, ...]
-
-    def __len__(self) -> int:
-        return len(self.events)
-
-    def __getitem__(self, index: int) -> RecordDAF:
-        return self.events[index]
-
-    def __iter__(self) -> Iterator[RecordDAF]:
-        return iter(self.events)
-
-    def item(self) -> RecordDAF:
-        """The estimate of the only event; ``ValueError`` if the result holds several."""
-        if len(self.events) != 1:
-            raise ValueError(
-                f"the result holds {len(self.events)} events; item() is for one record: "
-                "index it (result[i]) or use result.to_dataframe()"
-            )
-        return self.events[0]
-
-    @property
-    def daf(self) -> np.ndarray:
-        """DAF of each event [-], shape ``(n_events,)``."""
-        return np.array([event.daf for event in self.events])
-
-    @property
-    def doubtful(self) -> np.ndarray:
-        """``True`` for each event whose cut-off was a doubtful choice, shape ``(n_events,)``."""
-        return np.array([event.doubtful for event in self.events], dtype=bool)
-
-    def to_dataframe(self) -> pd.DataFrame:
-        """The scalar fields of every event as a table, one row per event (index ``event``).
-
-        Columns ``daf``, ``peak``, ``quasi_static_peak``, ``cutoff_hz``,
-        ``first_frequency_hz``, ``loading_frequency_hz`` (NaN when not known), ``doubtful``
-        and ``how_chosen``.
-        """
-        rows = [event.summary() for event in self.events]
-        return pd.DataFrame(rows, columns=list(_SUMMARY_FIELDS)).rename_axis("event")
-
-    def plot(self, ax=None, event: int | None = None, **kwargs):  # noqa: ANN001, ANN003, ANN201
-        """Plot one event's record and quasi-static part, or the DAF of every event.
-
-        With ``event=i`` (or a single event) :meth:`RecordDAF.plot` of that event (keywords
-        passed on); with several events and ``event=None`` the DAF of each event against its
-        number, doubtful ones hollow.
-        """
-        import matplotlib.pyplot as plt
-
-        if event is not None or len(self.events) == 1:
-            return self.events[0 if event is None else event].plot(ax=ax, **kwargs)
-        if ax is None:
-            _, ax = plt.subplots(figsize=(6, 3))
-        index = np.arange(len(self.events))
-        sure = ~self.doubtful
-        ax.plot(index[sure], self.daf[sure], "o", ms=4, color="C0", label="DAF")
-        if (~sure).any():
-            hollow = {"mfc": "none", "color": "C0", "label": "doubtful cut-off"}
-            ax.plot(index[~sure], self.daf[~sure], "o", ms=4, **hollow)
-        ax.set_xlabel("event")
-        ax.set_ylabel("DAF [-]")
-        ax.legend(fontsize="small", loc="best")
-        return ax
-
-    def __repr__(self) -> str:
-        n = len(self.events)
-        if n == 1:
-            return f"RecordDAFs(1 event: {self.events[0]!r})"
-        shown = ", ".join(f"{d:.3f}" for d in self.daf[:6])
-        more = ", ..." if n > 6 else ""
-        count = int(self.doubtful.sum())
-        flag = f"; {count} doubtful" if count else ""
-        return f"RecordDAFs({n} events: DAF {shown}{more}{flag})"
-
-
-def _choose_cutoff(loading: float | None, first: float) -> tuple[float, str, bool]:
-    """The cut-off and a sentence saying why; the flag is True when the choice is doubtful."""
-    if loading is None:
-        return first / 2.0, "cut-off f1 / 2 (loading frequency unknown: pass speed and span)", False
-    if loading >= first:
-        return (
-            first / 2.0,
-            f"loading {loading:.3g} Hz is at or above f1 {first:.3g} Hz: no cut-off separates "
-            "them; cut-off f1 / 2 removes part of the static response and inflates the DAF",
-            True,
-        )
-    cutoff = math.sqrt(loading * first)
-    note = "cut-off sqrt(loading frequency x f1), midway on a log scale"
-    doubtful = first / loading < 4.0
-    if doubtful:
-        note += (
-            f"; f1 / loading = {first / loading:.2g} < 4 leaves little room, expect the "
-            "filter to bias the DAF"
-        )
-    return cutoff, note, doubtful
-
-
-def _one_record(
-    x: np.ndarray,
-    fs: float,
-    cutoff_hz: float | None,
-    first_frequency_hz: float | None,
-    loading: float | None,
-    order: int,
-    baseline_fraction: float,
-    tail_fraction: float,
-    noise_cutoff_hz: float | None,
-    name: str,
-) -> RecordDAF:
-    x = _record(name, x)
-    notes = []
-    if first_frequency_hz is not None:
-        first = check.positive("first_frequency_hz", first_frequency_hz)
-        notes.append("f1 given")
-    elif cutoff_hz is None:
-        first = estimate_first_frequency(x, fs, tail_fraction)
-        notes.append(f"f1 from the Welch peak of the last {tail_fraction:.0%} of the record")
-    else:
-        first = None
-    if first is not None and fs < MIN_SAMPLES_PER_CYCLE * first:
+def _checked(name: str, values: object) -> np.ndarray:
+    """A record with finite samples that is not constant."""
+    x = _record(name, values)
+    if x.size < 3:
+        raise ValueError(f"{name} has {x.size} samples: a record needs many more")
+    spread = float(np.ptp(x))
+    if spread <= 1e-9 * float(np.max(np.abs(x))) or spread == 0.0:
         raise ValueError(
-            f"sample_rate_hz={fs!r} is too low for a first frequency of {first:.3g} Hz: "
-            f"record at least {MIN_SAMPLES_PER_CYCLE} samples per cycle "
-            f"({MIN_SAMPLES_PER_CYCLE * first:.3g} Hz)"
+            f"{name} is constant (every sample is {x[0]:g}): it holds no event; check the "
+            "gauge and the trigger"
         )
-    doubtful = False
-    if cutoff_hz is None:
-        cutoff, note, doubtful = _choose_cutoff(loading, first)
-        notes.insert(0, note)
+    return x
+
+
+def _one_record(x: np.ndarray, fs: float, name: str, plan: dict, event: dict) -> RecordDAF:
+    """The DAF of one event by the planned method (``plan``: shared; ``event``: its own)."""
+    x = _checked(name, x)
+    method, notes, doubtful = plan["method"], list(plan["notes"]), plan["doubtful"]
+    speed, span = event["speed"], plan["span"]
+    first = event["first_frequency_hz"]
+    if first is not None:
+        first = check.positive("first_frequency_hz", first)
+        check_sampling(fs, first)
+        notes.append("f1 given")
+    loading = None if (speed is None or span is None) else speed / span
+    extra = {"speed": speed, "loading_frequency_hz": loading, "first_frequency_hz": first}
+    if method == "filter":
+        quasi_static, baseline, doubt, found = filter_estimate(
+            x,
+            fs,
+            plan["cutoff_hz"],
+            first,
+            loading,
+            plan["order"],
+            plan["baseline_fraction"],
+            plan["tail_fraction"],
+            notes,
+        )
     else:
-        cutoff = check.positive("cutoff_hz", cutoff_hz)
-        notes.insert(0, "cut-off given")
-        if first is not None and cutoff >= first:
-            doubtful = True
-            notes.append(f"cut-off at or above f1 {first:.3g} Hz lets the vibration through")
-        if loading is not None and cutoff <= loading:
+        if method == "crawl":
+            shape = plan["shape"]
+        else:
+            shape = axle_shape(*plan["geometry"], event["axles"])
+        quasi_static, baseline, doubt, found = fit_estimate(
+            x,
+            fs,
+            shape,
+            speed,
+            span,
+            plan["crawl_speed"],
+            method == "crawl",
+            first,
+            plan["tail_fraction"],
+            notes,
+        )
+    extra.update(found)
+    doubtful = doubtful or doubt
+    response = x - baseline
+    noise_cutoff = plan["noise_cutoff_hz"]
+    if noise_cutoff is not None:
+        floor = extra.get("cutoff_hz") or extra["loading_frequency_hz"] or 0.0
+        if noise_cutoff <= floor:
+            raise ValueError(
+                f"noise_cutoff_hz={noise_cutoff!r} must be above "
+                + ("cutoff_hz" if method == "filter" else "the loading frequency")
+                + f" {floor:g} Hz"
+            )
+        response = lowpass(response, fs, noise_cutoff, plan["order"])
+        notes.append(f"noise removed above {noise_cutoff:.3g} Hz before taking the peak")
+        if method != "filter":  # smooth the fitted estimate alike, so a kink is clipped alike
+            quasi_static = lowpass(quasi_static, fs, noise_cutoff, plan["order"])
+    polarity = 1.0 if quasi_static.max() >= -quasi_static.min() else -1.0
+    quasi_static_peak = float(np.max(polarity * quasi_static))
+    noise = noise_std(x)
+    if quasi_static_peak <= 0 or quasi_static_peak < MIN_EVENT_SNR * noise:
+        ratio = quasi_static_peak / noise if noise > 0 else 0.0
+        raise ValueError(
+            f"{name} holds no event that stands out of the noise: its quasi-static peak "
+            f"{quasi_static_peak:.3g} is {ratio:.2g} times the noise level {noise:.3g} (at "
+            f"least {MIN_EVENT_SNR:g} needed; method {method!r}); is there a vehicle in it?"
+        )
+    if method == "filter" and loading is not None:
+        width = event_width(polarity * quasi_static, fs)
+        if width > MAX_EVENT_PASSAGES / loading:
             doubtful = True
             notes.append(
-                f"cut-off at or below the loading frequency {loading:.3g} Hz cuts the static "
-                "response"
+                f"the quasi-static event lasts {width:.3g} s above half its peak, more than "
+                f"{MAX_EVENT_PASSAGES:g} passages of span / speed ({1 / loading:.3g} s): drift, "
+                "a shift of the gauge's zero or several vehicles, not one passage"
             )
-    filtered = lowpass(x, fs, cutoff, order)
-    response = x
-    if noise_cutoff_hz is not None:
-        noise_cutoff = check.positive("noise_cutoff_hz", noise_cutoff_hz)
-        if noise_cutoff <= cutoff:
-            raise ValueError(
-                f"noise_cutoff_hz={noise_cutoff_hz!r} must be above cutoff_hz={cutoff:g}"
-            )
-        response = lowpass(x, fs, noise_cutoff, order)
-        notes.append(f"noise removed above {noise_cutoff:.3g} Hz before taking the peak")
-    if baseline_fraction > 0:
-        n_end = max(1, int(round(baseline_fraction * x.size)))
-        t = np.arange(x.size, dtype=float)
-        t0, t1 = (n_end - 1) / 2.0, x.size - 1 - (n_end - 1) / 2.0
-        y0, y1 = np.median(filtered[:n_end]), np.median(filtered[-n_end:])
-        line = y0 + (y1 - y0) * (t - t0) / (t1 - t0)
-        filtered = filtered - line
-        response = response - line
-    polarity = 1.0 if filtered.max() >= -filtered.min() else -1.0
-    quasi_static = float(np.max(polarity * filtered))
-    if quasi_static <= 0:
-        raise ValueError(f"{name} has no quasi-static response after filtering")
     peak = float(np.max(polarity * response))
+    if peak <= 0:
+        raise ValueError(
+            f"{name} never reaches the direction of its quasi-static response once the "
+            "baseline is removed: no event to measure"
+        )
+    if peak / quasi_static_peak > MAX_PLAUSIBLE_DAF:
+        doubtful = True
+        notes.append(
+            f"DAF {peak / quasi_static_peak:.3g} above {MAX_PLAUSIBLE_DAF:g}: check that the "
+            "record holds one vehicle's passage and not vibration alone"
+        )
+    # white noise left in the response: all of it, or the share below the noise cut-off
+    left = noise if noise_cutoff is None else noise * math.sqrt(min(1.0, 2 * noise_cutoff / fs))
+    if 3.0 * left > NOISE_PEAK_TOLERANCE * quasi_static_peak:
+        doubtful = True
+        notes.append(
+            f"noise (std {left:.3g}, {left / quasi_static_peak:.1%} of the quasi-static peak"
+            f"{'' if noise_cutoff is None else ' below the noise cut-off'}) can raise the peak "
+            f"by up to {3 * left / quasi_static_peak:.0%}: pass "
+            + ("noise_cutoff_hz" if noise_cutoff is None else "a lower noise_cutoff_hz")
+        )
     if doubtful:
         warnings.warn(f"{name}: " + "; ".join(notes), stacklevel=3)
-    if response is x:
-        response = x.copy()  # never keep a view of the caller's array
     response.setflags(write=False)
-    filtered.setflags(write=False)
+    quasi_static.setflags(write=False)
     return RecordDAF(
-        daf=peak / quasi_static,
+        daf=peak / quasi_static_peak,
         peak=polarity * peak,
-        quasi_static_peak=polarity * quasi_static,
-        cutoff_hz=float(cutoff),
-        first_frequency_hz=None if first is None else float(first),
-        loading_frequency_hz=loading,
+        quasi_static_peak=polarity * quasi_static_peak,
+        method=method,
         how_chosen="; ".join(notes),
         doubtful=bool(doubtful),
         sample_rate_hz=fs,
         response=response,
-        quasi_static=filtered,
+        quasi_static=quasi_static,
+        **extra,
     )
 
 
@@ -361,63 +230,130 @@ def _per_event(name: str, value: object, n: int) -> list:
     return values
 
 
+def _choose_method(
+    method: str, response: str | None, span: float | None, has_crawl: bool
+) -> tuple[str, str, bool]:
+    """The method, a sentence on why, and whether that choice alone makes the DAF doubtful."""
+    if method not in ("auto", *METHODS):
+        raise ValueError(f"method={method!r} must be 'auto', " + ", ".join(map(repr, METHODS)))
+    if response is not None:
+        check_response(response)
+    kinked = response in KINKED_RESPONSES
+    if has_crawl and method not in ("auto", "crawl"):
+        raise ValueError(f"crawl is used only by method='crawl' or 'auto', not {method!r}")
+    if method == "crawl" and not has_crawl:
+        raise ValueError("method='crawl' needs crawl=<a crawl run of the same vehicle>")
+    if method == "influence-line" and (span is None or response is None):
+        raise ValueError(
+            "method='influence-line' needs span and response ('strain', 'stress', 'moment' "
+            f"or 'deflection'); got span={span!r}, response={response!r}"
+        )
+    if method == "auto":
+        if has_crawl:
+            return "crawl", "crawl run given: it is the static response (auto)", False
+        if kinked and span is not None:
+            return "influence-line", f"a {response} record has kinks, span known (auto)", False
+        method, why = "filter", "auto"
+    else:
+        why = "asked"
+    if method == "filter" and kinked:
+        return (
+            "filter",
+            f"filter ({why}) on a {response} record: it rounds off the kink where an axle "
+            "passes the gauge and reads the DAF high by several per cent; give span (and "
+            "section, axles) for method 'influence-line'",
+            True,
+        )
+    if method == "filter" and response is None:
+        return "filter", f"filter ({why}; response not given: assumed smooth)", False
+    if method == "filter":
+        return "filter", f"filter ({why}) on a smooth {response} record", False
+    return method, f"method {method!r} asked", False
+
+
 def daf_from_record(
     signal: np.ndarray | Sequence[np.ndarray],
     sample_rate_hz: float,
     cutoff_hz: float | None = None,
     *,
+    method: str = "auto",
+    response: str | None = None,
     speed: float | Sequence[float] | None = None,
     span: float | None = None,
+    n_spans: int = 1,
+    section: float | None = None,
+    axles: Axles | Sequence[Axles] | None = None,
+    crawl: np.ndarray | None = None,
+    crawl_speed: float | None = None,
+    crawl_sample_rate_hz: float | None = None,
     first_frequency_hz: float | Sequence[float] | None = None,
     order: int = DEFAULT_FILTER_ORDER,
     baseline_fraction: float = 0.05,
     tail_fraction: float = 0.3,
     noise_cutoff_hz: float | None = None,
 ) -> RecordDAFs:
-    """DAF of recorded events: peak of the record over the peak of its low-passed copy.
+    """DAF of recorded events: the peak of each record over its quasi-static peak.
 
-    The quasi-static response is the record low-passed with a zero-phase Butterworth filter
-    (:func:`lowpass`).  A straight baseline through the filtered record's first and last
-    ``baseline_fraction`` is subtracted from both (drift, offsets), the loading direction is
-    the sign of the filtered record's largest excursion (tension strain up, deflection down:
-    either works) and ``DAF = peak / quasi-static peak`` in that direction.
-
-    With ``cutoff_hz=None`` the cut-off is ``sqrt(f_load f_1)``, between the loading
-    frequency ``f_load = speed / span`` and the first natural frequency ``f_1`` (given, or
-    the Welch peak of the record's free-vibration tail, :func:`estimate_first_frequency`).
-    When ``f_load >= f_1`` the cut-off is ``f_1 / 2``: the filter then removes part of the
-    static response and the DAF comes out too high; a ``UserWarning`` says so, as it does
-    for any cut-off within a factor 2 of either frequency.
+    The module docstring describes the three estimates.  ``method="auto"`` uses a crawl run
+    if given, else the influence-line fit for a strain, stress or moment record when
+    ``span`` is known, else the low-pass filter.  With the filter, a straight baseline
+    through the filtered record's first and last ``baseline_fraction`` is taken off (drift,
+    offsets) and ``cutoff_hz=None`` puts the cut-off at ``sqrt(f_load f_1)``, between the
+    loading frequency ``f_load = speed / span`` and the first natural frequency ``f_1``
+    (given, or the Welch peak of the record's free-vibration tail,
+    :func:`estimate_first_frequency`).  The fits take off the straight baseline they fit.
+    The loading direction is the sign of the quasi-static estimate's larger excursion
+    (tension strain up, deflection down: either works).
 
     Parameters
     ----------
     signal
         One record (1-D array), or several events: a list of 1-D arrays or a 2-D array with
         one event per row.  Each record should start before the vehicle arrives and end
-        with ``tail_fraction`` of free vibration after it has left.
+        after it has left (the filter wants ``tail_fraction`` of free vibration at the end).
     sample_rate_hz
         Sampling rate [Hz]; at least ``MIN_SAMPLES_PER_CYCLE`` times the first frequency.
     cutoff_hz
-        Cut-off of the low-pass [Hz]; ``None`` chooses it as above.
+        Cut-off of the low-pass [Hz] (method ``"filter"`` only); ``None`` chooses it.
+    method
+        ``"auto"``, ``"filter"``, ``"influence-line"`` or ``"crawl"``.
+    response
+        What the gauge records: ``"strain"``, ``"stress"``, ``"moment"`` (kinked) or
+        ``"deflection"`` (smooth); ``None`` if not known (the filter then assumes smooth).
     speed
         Vehicle speed [m/s], one value or one per event; with ``span`` it gives the loading
-        frequency.
+        frequency.  The fits search it (1 to 60 m/s) when it is not given.
     span
-        Span length [m].
+        Length of each span [m].
+    n_spans
+        1 (simple span) or 2 (two equal continuous spans), for the influence line.
+    section
+        The gauge's distance from the support where vehicles enter [m]; default midspan of
+        the first span.
+    axles
+        The vehicle's axles (:class:`Axles`), one for all events or one per event; default a
+        single axle.
+    crawl
+        A crawl run of the same vehicle over the same gauge (1-D record, same unit), for
+        method ``"crawl"``; its baseline is taken off as for the filter.
+    crawl_speed
+        Speed of the crawl run [m/s]; without it the stretch from crawl to record is fitted.
+    crawl_sample_rate_hz
+        Sampling rate of the crawl run [Hz]; default ``sample_rate_hz``.
     first_frequency_hz
         First natural frequency [Hz], one value or one per event; ``None`` estimates it when
-        the cut-off is to be chosen.
+        the filter's cut-off is to be chosen.
     order
-        Butterworth order of the one-way filter (the zero-phase filter doubles it).
+        Butterworth order of the one-way filters (the zero-phase filter doubles it).
     baseline_fraction
-        Fraction of the record at each end that defines the baseline; 0 keeps the record's
-        own zero.
+        Fraction of the record (and crawl run) at each end that defines the filter's
+        baseline; 0 keeps the record's own zero.
     tail_fraction
         Fraction at the end of the record used to estimate the first frequency.
     noise_cutoff_hz
-        If given, the record itself is low-passed at this frequency (above the cut-off,
-        typically a few times ``f_1``) before its peak is taken, so sensor noise does not
-        inflate the peak.
+        If given, the record is low-passed at this frequency (above the filter's cut-off or
+        the loading frequency, typically a few times ``f_1``) before its peak is taken, so
+        sensor noise does not inflate the peak; a fitted estimate is smoothed alike.
 
     Returns
     -------
@@ -425,37 +361,95 @@ def daf_from_record(
         One entry per event (a single record is one event), whatever was given:
         ``result.item()`` is the :class:`RecordDAF` of a single record, ``result[i]`` that of
         event ``i``, ``result.daf`` the DAFs as an array and ``result.to_dataframe()`` one
-        row per event.  ``doubtful`` marks events whose cut-off could not separate the
-        loading from the first frequency (a ``UserWarning`` is issued too).
+        row per event.  Each entry's ``method`` and ``how_chosen`` say how its estimate was
+        made; ``doubtful`` marks the ones not to trust as they stand (with a ``UserWarning``).
 
     Raises
     ------
     ValueError
-        NaN or infinite samples, a record too short for the filter, a sample rate too low
-        for the first frequency, a cut-off at or above the Nyquist frequency, or a record
-        without a quasi-static response.
+        NaN or infinite samples, a constant record, no event standing out of the noise, a
+        record shorter than the vehicle's passage or the filter, a sample rate too low for
+        the first frequency, a cut-off at or above the Nyquist frequency, a section off the
+        bridge, an unknown method or response, or a method without what it needs.
 
     Examples
     --------
-    A 1 s half-sine pulse of height 1 plus a 6 Hz vibration of amplitude 0.2 that crests with
-    it: the true DAF is 1.2.
+    A strain record without any vibration: one axle crossing a 30 m simple span at 25 m/s,
+    a 200 Hz gauge at midspan.  The influence-line fit finds DAF 1; the filter rounds off
+    the kink and reads 10 % high (and says so):
 
     >>> import numpy as np
-    >>> fs = 200.0
+    >>> from vbi_lib.monitoring import influence_line
+    >>> fs, v, span = 200.0, 25.0, 30.0
+    >>> t = np.arange(0.0, 8.0, 1 / fs)
+    >>> strain = 1e-6 * influence_line(v * (t - 1.003), 15.0, span)   # arrives at 1.003 s
+    >>> fit = daf_from_record(strain, fs, speed=v, span=span, response="strain").item()
+    >>> fit.method, round(fit.daf, 4), round(fit.arrival_s, 4), fit.doubtful
+    ('influence-line', 1.0, 1.003, False)
+    >>> import warnings
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore")
+    ...     low = daf_from_record(strain, fs, speed=v, span=span, response="strain",
+    ...                           method="filter", first_frequency_hz=4.0).item()
+    >>> round(low.daf, 2), low.doubtful
+    (1.1, True)
+
+    A deflection record with a 6 Hz vibration of 0.2 that crests with the 1 s half-sine
+    passage: the true DAF is 1.2, and the filter finds it:
+
     >>> t = np.arange(-2.0, 8.0, 1 / fs)
     >>> pulse = np.where((t > 0) & (t < 1), np.sin(np.pi * t), 0.0)
     >>> ring = 0.2 * np.exp(-0.3 * np.abs(t - 0.5)) * np.cos(2 * np.pi * 6 * (t - 0.5))
-    >>> event = daf_from_record(-(pulse + ring), fs, speed=30.0, span=30.0).item()
+    >>> event = daf_from_record(-(pulse + ring), fs, speed=30.0, span=30.0,
+    ...                         response="deflection").item()
     >>> round(event.daf, 2), round(event.first_frequency_hz, 1), round(event.cutoff_hz, 2)
     (1.2, 6.0, 2.45)
-    >>> event.doubtful
-    False
     """
     fs = check.positive("sample_rate_hz", sample_rate_hz)
     if not (0.0 <= float(baseline_fraction) < 0.5):
         raise ValueError(f"baseline_fraction={baseline_fraction!r} must be in [0, 0.5)")
     if span is not None:
         span = check.positive("span", span)
+    method, reason, doubtful = _choose_method(method, response, span, crawl is not None)
+    if cutoff_hz is not None and method != "filter":
+        raise ValueError(
+            f"cutoff_hz={cutoff_hz!r} is used only by method 'filter' (this record uses "
+            f"{method!r}): drop it or pass method='filter'"
+        )
+    plan = {
+        "method": method,
+        "notes": [reason],
+        "doubtful": doubtful,
+        "span": span,
+        "cutoff_hz": cutoff_hz,
+        "order": order,
+        "baseline_fraction": float(baseline_fraction),
+        "tail_fraction": tail_fraction,
+        "noise_cutoff_hz": None
+        if noise_cutoff_hz is None
+        else check.positive("noise_cutoff_hz", noise_cutoff_hz),
+        "crawl_speed": None if crawl_speed is None else check.positive("crawl_speed", crawl_speed),
+    }
+    unused = {"section": section, "axles": axles} if method != "influence-line" else {}
+    for name, value in unused.items():
+        if value is not None:
+            raise ValueError(
+                f"{name}={value!r} is used only by method 'influence-line' (this record uses "
+                f"{method!r}: give span and response='strain', 'stress' or 'moment', or "
+                "method='influence-line')"
+            )
+    if method == "influence-line":
+        n_spans = check.n_spans(n_spans)
+        if section is None:
+            section = span / 2.0
+            plan["notes"].append("gauge at midspan of span 1 (section not given)")
+        plan["geometry"] = (check.number("section", section), span, n_spans, response)
+    if method == "crawl":
+        crawl_fs = fs if crawl_sample_rate_hz is None else crawl_sample_rate_hz
+        crawl_fs = check.positive("crawl_sample_rate_hz", crawl_fs)
+        plan["shape"] = crawl_shape(
+            _checked("crawl", crawl), crawl_fs, plan["crawl_speed"], float(baseline_fraction)
+        )
     several = np.ndim(signal) == 2 or (
         isinstance(signal, list | tuple)
         and len(signal) > 0
@@ -465,28 +459,30 @@ def daf_from_record(
     n = len(events)
     if n == 0:
         raise ValueError("signal is an empty list: give at least one record")
-    speeds = _per_event("speed", speed, n)
-    firsts = _per_event("first_frequency_hz", first_frequency_hz, n)
+    per_event = {
+        "speed": _per_event("speed", speed, n),
+        "first_frequency_hz": _per_event("first_frequency_hz", first_frequency_hz, n),
+        "axles": _per_event("axles", axles, n),
+    }
     results = []
-    for i, (record, v, f1) in enumerate(zip(events, speeds, firsts, strict=True)):
-        loading = None
-        if v is not None and span is not None:
-            loading = check.positive("speed", v) / span
-        results.append(
-            _one_record(
-                record,
-                fs,
-                cutoff_hz,
-                f1,
-                loading,
-                order,
-                float(baseline_fraction),
-                tail_fraction,
-                noise_cutoff_hz,
-                f"signal[{i}]" if several else "signal",
-            )
-        )
+    for i, record in enumerate(events):
+        event = {key: values[i] for key, values in per_event.items()}
+        if event["speed"] is not None:
+            event["speed"] = check.positive("speed", event["speed"])
+        name = f"signal[{i}]" if several else "signal"
+        results.append(_one_record(record, fs, name, plan, event))
     return RecordDAFs(tuple(results))
 
 
-__all__ = ["MIN_SAMPLES_PER_CYCLE", "RecordDAF", "RecordDAFs", "daf_from_record"]
+__all__ = [
+    "MAX_CRAWL_RESIDUAL",
+    "MAX_EVENT_PASSAGES",
+    "MAX_FIT_RESIDUAL",
+    "MAX_FIT_RESIDUAL_SPEED_SEARCHED",
+    "MAX_PLAUSIBLE_DAF",
+    "MIN_EVENT_SNR",
+    "MIN_FREQUENCY_RATIO",
+    "MIN_SAMPLES_PER_CYCLE",
+    "NOISE_PEAK_TOLERANCE",
+    "daf_from_record",
+]
