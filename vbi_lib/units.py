@@ -76,6 +76,17 @@ _EXAMPLE = {
 }
 
 
+def si_unit(kind: str) -> str:
+    """The SI unit (pint text) that :func:`parse` converts a ``kind`` of quantity to.
+
+    >>> si_unit("stiffness")
+    'N/m'
+    """
+    if kind not in _SI_UNIT:
+        raise ValueError(f"kind={kind!r} is not known; use one of {sorted(_SI_UNIT)}")
+    return _SI_UNIT[kind]
+
+
 @lru_cache(maxsize=1)
 def registry() -> Any:
     """The shared ``pint.UnitRegistry`` with the study's ``slinch`` and ``kip`` defined."""
