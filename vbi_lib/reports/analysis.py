@@ -420,7 +420,7 @@ def warm_up() -> None:
     """Run a tiny report's crossings, so the compiled kernels are loaded before a real one.
 
     A fresh process loads numba's cached machine code on first call (about two seconds);
-    the report runner calls this in its kernel while it checks the parameter files.
+    the report runner has its kernel call this first, while it prepares the rest.
     """
     from .. import units as u
     from .inputs import prepare

@@ -76,9 +76,9 @@ def nested(**flat: Any) -> dict[str, Any]:
             continue
         values[section][key] = p[name]
     path = p["profile_path"]
-    if path is not None and not (isinstance(path, str) and not path.strip()):
+    if not (isinstance(path, str) and not path.strip()):  # None is refused, not "not given"
         values["profile"].update(
-            file=str(path), length_unit=p["profile_unit"], bridge_start=p["approach"]
+            file=path, length_unit=p["profile_unit"], bridge_start=p["approach"]
         )
     else:
         values["profile"].update(iso_class=p["iso_class"], approach_length=p["approach"])

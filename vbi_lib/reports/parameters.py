@@ -198,6 +198,11 @@ class ReportParameters:
 
 # ---------------------------------------------------------------------------- checks of one value
 def _suggest(key: str, allowed: list[str]) -> str:
+    if key[:1].isdigit():
+        return (
+            "is not a known key: it looks like the rest of a number cut at a comma (inside "
+            "{ } a comma separates entries); write numbers with a decimal point, e.g. 30.5 m"
+        )
     close = difflib.get_close_matches(key, allowed, n=1, cutoff=0.6)
     hint = f"did you mean {close[0]!r}? " if close else ""
     return f"is not a known key; {hint}allowed: {', '.join(allowed)}"
@@ -213,14 +218,21 @@ def _range_text(key: Key, unit: str) -> str:
     si_unit = u.si_unit(key.kind)
     shown = _RANGE_UNIT.get(key.kind, si_unit)
     low, high = (ureg.Quantity(v, si_unit).to(shown).magnitude for v in (key.low, key.high))
-    text = f"{low:.3g} to {high:.3g} {shown}"
+    text = f"{_g(low)} to {_g(high)} {shown}"
     try:
         low, high = (ureg.Quantity(v, si_unit).to(unit).magnitude for v in (key.low, key.high))
     except Exception:  # a weight for a mass, or the same unit: SI alone
         return text
     if ureg.parse_units(unit) != ureg.parse_units(shown):
-        text += f" ({low:.3g} to {high:.3g} {unit})"
+        text += f" ({_g(low)} to {_g(high)} {unit})"
     return text
+
+
+def _g(value: float) -> str:
+    """Three significant digits, thousands separated: ``3,000``, ``0.621``, ``1e+11``."""
+    if 1e-3 <= abs(value) < 1e6:
+        return f"{float(f'{value:.3g}'):,g}"
+    return f"{value:.3g}"
 
 
 def _quantity(name: str, key: Key, value: object, given: dict[str, str]) -> float:

@@ -91,7 +91,7 @@ def quantity(si_value: float, kind: str, digits: int = 3) -> str:
 
 
 def _e(text: object) -> str:
-    return html.escape(str(text), quote=True)
+    return html.escape(str(text), quote=False)  # text nodes only, never attributes
 
 
 def _table(header: Iterable[str], rows: Iterable[Iterable[str]], css: str) -> str:

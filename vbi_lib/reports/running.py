@@ -57,7 +57,7 @@ HTML_TEMPLATES = HERE / "templates"
 CELL_TIMEOUT = 600.0
 #: Seconds chromium may take to print one report.
 PRINT_TIMEOUT = 120.0
-#: What the kernel runs while the parameter files are checked.
+#: What the kernel runs first (imports, compiled code, fonts), while the parent imports too.
 WARM_UP = """
 import io
 import matplotlib.pyplot as plt
@@ -303,8 +303,7 @@ class _Kernel:
         )
         self.kc = self.km.blocking_client()
         self.kc.start_channels()
-        # warm up while the parameter files are checked: imports and compiled code loading
-        # are most of a first report's time
+        # warm up at once: imports and compiled code loading are most of a first report's time
         self.kc.execute(WARM_UP, silent=True)
 
     def ready(self, timeout: float = 120.0) -> None:
@@ -493,10 +492,10 @@ def write_reports(
         (work / "out").mkdir()
         names = [s.name if isinstance(s, ReportJob) else _name(Path(s).stem) for s in sources]
         folder = check_output(output_dir, names, pdf)
+        jobs = [s if isinstance(s, ReportJob) else load_job(s) for s in sources]
         kernel = _Kernel(work)
         kernel.start()
         threading.Thread(target=_preload, daemon=True).start()
-        jobs = [s if isinstance(s, ReportJob) else load_job(s) for s in sources]
         kernel.ready()
         files: list[tuple[Path, Path]] = []
         results = []

@@ -1,0 +1,214 @@
+"""The command line: one message and status 2 for bad input, nothing left behind, ever.
+
+Bad input is checked in-process through ``cli.main`` (fast); the routes that need a real
+process (a good run, SIGTERM and SIGINT) run ``python -m vbi_lib.reports`` with a private
+``TMPDIR``, so "nothing left in /tmp" is checked on a folder only that process uses.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import psutil
+import pytest
+
+from vbi_lib.reports import cli, running
+from vbi_lib.reports.running import ReportFailed, ReportJob, write_reports
+
+GOOD = """\
+title: A 30 m bridge
+bridge: {span: 30 m, EI: 2e10 N*m**2, mass_per_length: 8 t/m}
+vehicle: {mass: 30 t, frequency: 3 Hz}
+profile: {iso_class: B, seed: 3}
+speeds: [50 km/h, 80 km/h]
+quick: true
+"""
+
+
+BLOCK = """\
+bridge:
+  span: 30,5 m
+  EI: 2e10 N*m**2
+  mass_per_length: 8 t/m
+vehicle: {mass: 30 t, frequency: 3 Hz}
+speeds: [50 km/h]
+"""
+
+
+@pytest.fixture
+def folder(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """A folder with a good parameter file, the working directory, with a private TMPDIR."""
+    (tmp_path / "good.yaml").write_text(GOOD)
+    (tmp_path / "tmp").mkdir()
+    monkeypatch.setenv("TMPDIR", str(tmp_path / "tmp"))
+    monkeypatch.setattr("tempfile.tempdir", None)
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+def refused(argv: list[str], capsys: pytest.CaptureFixture, folder: Path) -> str:
+    """Run the command line; assert status 2, one line, no traceback, nothing written."""
+    status = cli.main(argv)
+    out, err = capsys.readouterr()
+    assert status == 2, err
+    assert out == "" and err.count("\n") == 1 and "Traceback" not in err
+    assert err.startswith("vbi-report: error: ")
+    assert not (folder / "out").exists()
+    assert list((folder / "tmp").iterdir()) == []
+    return err
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        (BLOCK, "bad.yaml: bridge.span='30,5 m' has a comma in its number"),
+        (GOOD.replace("30 m,", "30,5 m,"), "bridge.5 m=None is not a known key: it looks like "
+         "the rest of a number cut at a comma"),
+        (GOOD.replace("[50 km/h, 80 km/h]", "[50; 80 km/h]"), "speeds[0]='50; 80 km/h' holds"),
+        (GOOD.replace("[50 km/h, 80 km/h]", "[nan km/h]"), "speeds[0]='nan km/h' is not a finite"),
+        (GOOD.replace("quick: true", "quick: 'true'"), "quick='true' must be a YAML boolean"),
+        (GOOD.replace("seed: 3", "seed: '3'"), "profile.seed='3' must be a whole number"),
+        (GOOD.replace("vehicle:", "vehicel:"), "vehicel={'mass'"),
+        (GOOD + "title: again\n", "bad.yaml, line 7, column 1: not valid YAML (key 'title' is "
+         "given twice)"),
+        (GOOD.replace("speeds: [", "speeds: [[["), "bad.yaml, line 6"),
+        ("- just\n- a list\n", "parameters must be a mapping"),
+        (GOOD.replace("{iso_class: B, seed: 3}", "{file: deck.csv, length_unit: m}"),
+         "profile.file='deck.csv' is not a file that exists"),
+    ],
+)  # fmt: skip
+def test_bad_parameter_files_exit_2_with_one_message(
+    text: str, message: str, folder: Path, capsys: pytest.CaptureFixture
+) -> None:
+    (folder / "bad.yaml").write_text(text)
+    err = refused(["bad.yaml", "--output-dir", "out"], capsys, folder)
+    assert message in err
+
+
+def test_a_deck_much_shorter_than_the_bridge_exits_2(folder: Path, capsys) -> None:
+    (folder / "deck.csv").write_text("\n".join(f"{i * 0.025},0" for i in range(800)))  # 20 m
+    text = GOOD.replace("{iso_class: B, seed: 3}", "{file: deck.csv, length_unit: m}")
+    (folder / "short.yaml").write_text(text)
+    err = refused(["short.yaml", "--output-dir", "out"], capsys, folder)
+    assert "profile.file='deck.csv' covers 19.98 m" in err
+
+
+def test_the_output_path_is_checked_before_anything_runs(folder: Path, capsys) -> None:
+    (folder / "out").write_text("a file")
+    err = refused_file = cli.main(["good.yaml", "--output-dir", "out"])
+    assert refused_file == 2
+    err = capsys.readouterr().err
+    assert "--output-dir='out' is a file; give a folder" in err
+    (folder / "out").unlink()
+    (folder / "out" / "good.html").mkdir(parents=True)
+    assert cli.main(["good.yaml", "--output-dir", "out", "--no-pdf"]) == 2
+    assert "good.html is a folder" in capsys.readouterr().err
+    assert list((folder / "out").iterdir()) == [folder / "out" / "good.html"]
+    assert list((folder / "tmp").iterdir()) == []
+
+
+def test_two_files_of_one_name_and_the_old_form_are_refused(folder: Path, capsys) -> None:
+    (folder / "sub").mkdir()
+    (folder / "sub" / "good.yaml").write_text(GOOD)
+    err = refused(["good.yaml", "sub/good.yaml", "--output-dir", "out"], capsys, folder)
+    assert "two parameter files are named 'good'" in err
+    err = refused(["report.html", "span=100 ft", "--output-dir", "out"], capsys, folder)
+    assert "name=value parameters are replaced by a parameter file" in err
+
+
+def test_missing_chromium_is_refused_before_running(folder: Path, capsys, monkeypatch) -> None:
+    monkeypatch.setattr(running, "find_chromium", lambda: None)
+    err = refused(["good.yaml", "--output-dir", "out"], capsys, folder)
+    assert "apt-get install -y chromium" in err and "--no-pdf" in err
+
+
+def test_a_report_that_fails_while_running_leaves_nothing(folder: Path, monkeypatch) -> None:
+    broken = json.loads(running.TEMPLATE.read_text())
+    broken["cells"].append(
+        {"cell_type": "code", "id": "boom", "metadata": {}, "execution_count": None,
+         "outputs": [], "source": ["if '30 m' in (title or ''):\n    raise RuntimeError('boom')"]}
+    )  # fmt: skip
+    (folder / "broken.ipynb").write_text(json.dumps(broken))
+    monkeypatch.setattr(running, "TEMPLATE", folder / "broken.ipynb")
+    starts = []
+    monkeypatch.setattr(running._Kernel, "start", _counting(running._Kernel.start, starts))
+    first = {
+        "title": "first",
+        "bridge": {"span": "30 m", "EI": "2e10 N*m**2", "mass_per_length": "8 t/m"},
+        "vehicle": {"mass": "30 t", "frequency": "3 Hz"},
+        "speeds": ["50 km/h"],
+        "quick": True,
+    }
+    job = ReportJob.from_mapping(first, name="other")
+    with pytest.raises(ReportFailed, match="good.yaml: RuntimeError: boom"):
+        write_reports([job, "good.yaml"], folder / "out", pdf=False)
+    assert len(starts) == 1  # both reports went through one kernel; the first one ran
+    assert not (folder / "out").exists()
+    assert list((folder / "tmp").iterdir()) == []
+
+
+def _counting(method, calls: list):  # noqa: ANN001, ANN202
+    def wrapper(self):  # noqa: ANN001, ANN202
+        calls.append(self)
+        return method(self)
+
+    return wrapper
+
+
+# ---------------------------------------------------------------------------- real processes
+def _spawn(folder: Path, *args: str) -> subprocess.Popen:
+    env = dict(os.environ, TMPDIR=str(folder / "tmp"))
+    return subprocess.Popen(
+        [sys.executable, "-m", "vbi_lib.reports", *args],
+        cwd=folder,
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+
+
+def test_a_good_run_writes_the_html_and_prints_its_path(folder: Path) -> None:
+    process = _spawn(folder, "good.yaml", "--output-dir", "out", "--no-pdf")
+    out, err = process.communicate(timeout=300)
+    assert process.returncode == 0, err
+    assert out.splitlines() == ["out/good.html"]
+    assert err == ""
+    assert sorted(p.name for p in (folder / "out").iterdir()) == ["good.html"]
+    assert list((folder / "tmp").iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    ("signum", "status", "word"),
+    [(signal.SIGTERM, 143, "terminated"), (signal.SIGINT, 130, "interrupted")],
+)
+def test_a_signal_stops_the_kernel_and_leaves_nothing(
+    folder: Path, signum: int, status: int, word: str
+) -> None:
+    process = _spawn(folder, "good.yaml", "--output-dir", "out", "--no-pdf")
+    parent = psutil.Process(process.pid)
+    deadline = time.monotonic() + 120
+    kernels: list[psutil.Process] = []
+    while not kernels and time.monotonic() < deadline and process.poll() is None:
+        kernels = [
+            c for c in parent.children(recursive=True) if "ipykernel" in " ".join(c.cmdline())
+        ]
+        time.sleep(0.05)
+    assert kernels, "the report's kernel never started"
+    time.sleep(0.5)  # inside the report
+    process.send_signal(signum)
+    out, err = process.communicate(timeout=60)
+    assert process.returncode == status
+    assert err.strip().splitlines() == [f"vbi-report: {word} ({signal.Signals(signum).name}); "
+                                        "nothing written"]  # fmt: skip
+    assert "Traceback" not in err and out == ""
+    psutil.wait_procs(kernels, timeout=10)
+    assert not any(k.is_running() and k.status() != psutil.STATUS_ZOMBIE for k in kernels)
+    assert not (folder / "out").exists()
+    assert list((folder / "tmp").iterdir()) == []
