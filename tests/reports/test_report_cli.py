@@ -212,3 +212,19 @@ def test_a_signal_stops_the_kernel_and_leaves_nothing(
     assert not any(k.is_running() and k.status() != psutil.STATUS_ZOMBIE for k in kernels)
     assert not (folder / "out").exists()
     assert list((folder / "tmp").iterdir()) == []
+
+
+def test_papermill_runs_the_template_on_the_same_file(folder: Path) -> None:
+    env = dict(os.environ, TMPDIR=str(folder / "tmp"))
+    command = [sys.executable, "-m", "papermill", str(running.TEMPLATE), "run.ipynb",
+               "-f", "good.yaml", "--cwd", str(folder), "-k", "python3"]  # fmt: skip
+    done = subprocess.run(command, cwd=folder, env=env, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    notebook = json.loads((folder / "run.ipynb").read_text())
+    html = "".join(
+        "".join(output.get("data", {}).get("text/html", ""))
+        for cell in notebook["cells"]
+        for output in cell.get("outputs", [])
+    )
+    assert "A 30 m bridge" in html and "The tyre stayed on the road" in html
+    assert "parameters given directly" in html  # papermill does not pass the file's name
