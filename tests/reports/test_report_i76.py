@@ -51,18 +51,18 @@ def reports(shared_data: Path, tmp_path_factory: pytest.TempPathFactory) -> dict
         (folder / f"i76-span{k}.yaml").write_text(text)
         files.append(folder / f"i76-span{k}.yaml")
     starts: list = []
-    start = running._Kernel.start
+    start = running.Kernel.start
 
     def counted(self):  # noqa: ANN001, ANN202
         starts.append(self)
         return start(self)
 
-    running._Kernel.start = counted
+    running.Kernel.start = counted
     try:
         ci = os.environ.get("CI") == "true"
         written = running.write_reports(files, root / "out", pdf=pdf or ci)
     finally:
-        running._Kernel.start = start
+        running.Kernel.start = start
     return {"root": root, "written": written, "files": files, "kernels": len(starts)}
 
 

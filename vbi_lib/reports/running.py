@@ -23,7 +23,6 @@ import hashlib
 import os
 import shutil
 import signal
-import subprocess
 import tempfile
 import threading
 import time
@@ -35,7 +34,9 @@ from typing import Any
 import yaml
 
 from .inputs import prepare
+from .kernel import Kernel, ReportFailed
 from .parameters import ParameterError, ReportParameters, read_parameters
+from .printing import Printer, find_chromium
 
 __all__ = [
     "OutputError",
@@ -55,43 +56,10 @@ TEMPLATE = HERE / "templates" / "bridge_report.ipynb"
 HTML_TEMPLATES = HERE / "templates"
 #: Seconds any one cell of the report may run.
 CELL_TIMEOUT = 600.0
-#: Seconds chromium may take to print one report.
-PRINT_TIMEOUT = 120.0
-#: What the kernel runs first (imports, compiled code, fonts), while the parent imports too.
-WARM_UP = """
-import io
-import matplotlib.pyplot as plt
-import vbi_lib.reports.render
-from vbi_lib.reports.analysis import warm_up
-warm_up()
-figure = plt.figure()
-figure.savefig(io.BytesIO(), format="svg")
-plt.close(figure)
-"""
-#: Chromium's switches: headless, no sandbox (containers), nothing fetched, no first-run work.
-CHROMIUM_ARGS = (
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--disable-extensions",
-    "--disable-default-apps",
-    "--no-default-browser-check",
-    "--mute-audio",
-    "--no-pdf-header-footer",
-)
 
 
 class OutputError(ValueError):
     """The output folder or a file name in it cannot be written (checked before running)."""
-
-
-class ReportFailed(RuntimeError):
-    """A report failed while running (a cell raised, the kernel died, chromium failed)."""
 
 
 class Terminated(BaseException):  # noqa: N818 (a signal, like KeyboardInterrupt)
@@ -240,11 +208,6 @@ class ReportFiles:
     pdf: Path | None
 
 
-def find_chromium() -> str | None:
-    """Debian's chromium (``VBI_CHROMIUM`` overrides the path), or ``None``."""
-    return os.environ.get("VBI_CHROMIUM") or shutil.which("chromium")
-
-
 def check_output(output_dir: str | Path, names: Sequence[str], pdf: bool) -> Path:
     """Check that the reports' files can be written in ``output_dir``; nothing is created.
 
@@ -282,81 +245,7 @@ def check_output(output_dir: str | Path, names: Sequence[str], pdf: bool) -> Pat
     return folder
 
 
-# ---------------------------------------------------------------------------- kernel
-class _Kernel:
-    """One IPython kernel for all the reports of a run, in the work folder."""
-
-    def __init__(self, work: Path) -> None:
-        from jupyter_client import KernelManager
-
-        self.work = work
-        self.km = KernelManager(kernel_name="python3", connection_file=str(work / "kernel.json"))
-        self.kc = None
-        self.log = None
-
-    def start(self) -> None:
-        env = dict(os.environ, TMPDIR=str(self.work / "tmp"), PYDEVD_DISABLE_FILE_VALIDATION="1")
-        env.pop("JPY_PARENT_PID", None)
-        self.log = open(self.work / "kernel.log", "wb")  # noqa: SIM115 (closed in stop)
-        self.km.start_kernel(
-            cwd=str(self.work), env=env, stdout=subprocess.DEVNULL, stderr=self.log
-        )
-        self.kc = self.km.blocking_client()
-        self.kc.start_channels()
-        # warm up at once: imports and compiled code loading are most of a first report's time
-        self.kc.execute(WARM_UP, silent=True)
-
-    def ready(self, timeout: float = 120.0) -> None:
-        """Wait until the kernel answers (it was started by :meth:`start`)."""
-        try:
-            self.kc.wait_for_ready(timeout=timeout)
-        except RuntimeError as error:
-            raise ReportFailed(f"the Jupyter kernel did not start: {error}") from None
-
-    def run(self, code: str, timeout: float) -> list[dict]:
-        """Execute ``code``; its outputs as notebook outputs (stderr left out)."""
-        import nbformat
-
-        outputs: list = []
-
-        def keep(message: dict) -> None:
-            kind = message["header"]["msg_type"]
-            if kind == "stream" and message["content"].get("name") == "stderr":
-                return
-            if kind in ("stream", "display_data", "execute_result", "error"):
-                outputs.append(nbformat.v4.output_from_msg(message))
-            elif kind == "clear_output":
-                outputs.clear()
-
-        try:
-            reply = self.kc.execute_interactive(
-                code, timeout=timeout, output_hook=keep, allow_stdin=False, store_history=False
-            )
-        except TimeoutError:
-            raise ReportFailed(f"a report cell ran longer than {timeout:.0f} s") from None
-        content = reply["content"]
-        if content["status"] != "ok":
-            name, value = content.get("ename", "Error"), content.get("evalue", "")
-            raise ReportFailed(f"{name}: {value}")
-        return outputs
-
-    def stop(self) -> None:
-        with contextlib.suppress(Exception):
-            if self.kc is not None:
-                self.kc.stop_channels()
-        with contextlib.suppress(Exception):
-            if self.km.has_kernel:
-                self.km.shutdown_kernel(now=True)
-        process = getattr(getattr(self.km, "provisioner", None), "process", None)
-        if process is not None and process.poll() is None:
-            with contextlib.suppress(Exception):
-                os.killpg(process.pid, signal.SIGKILL)
-                process.wait(5)
-        if self.log is not None:
-            self.log.close()
-
-
-def _execute(kernel: _Kernel, job: ReportJob, timeout: float) -> Any:
+def _execute(kernel: Kernel, job: ReportJob, timeout: float) -> Any:
     """The template run with ``job``'s parameters, as an executed notebook."""
     from papermill.iorw import load_notebook_node
     from papermill.parameterize import parameterize_notebook
@@ -392,38 +281,6 @@ def _html(notebook: Any, job: ReportJob) -> str:
         notebook, resources={"metadata": {"name": job.parameters.title}, "vbi_page_size": page}
     )
     return html
-
-
-def _print_pdf(html: Path, pdf: Path, work: Path) -> None:
-    """Print ``html`` to ``pdf`` with chromium (its profile and temporary files in ``work``)."""
-    command = [
-        find_chromium() or "chromium",
-        *CHROMIUM_ARGS,
-        f"--user-data-dir={work / 'chromium'}",
-        f"--print-to-pdf={pdf}",
-        html.as_uri(),
-    ]
-    env = dict(os.environ, TMPDIR=str(work / "tmp"))
-    process = subprocess.Popen(
-        command,
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.PIPE,
-        env=env,
-        start_new_session=True,
-    )
-    try:
-        _, errors = process.communicate(timeout=PRINT_TIMEOUT)
-    except subprocess.TimeoutExpired:
-        raise ReportFailed(f"chromium did not print {html.name} in {PRINT_TIMEOUT:.0f} s") from None
-    finally:
-        if process.poll() is None:
-            with contextlib.suppress(ProcessLookupError):
-                os.killpg(process.pid, signal.SIGKILL)
-            process.wait()
-    if process.returncode != 0 or not pdf.is_file() or pdf.stat().st_size == 0:
-        lines = [line for line in errors.decode(errors="replace").splitlines() if line.strip()]
-        detail = lines[-1] if lines else f"exit status {process.returncode}"
-        raise ReportFailed(f"chromium could not print {html.name} to PDF: {detail}")
 
 
 def _commit(files: list[tuple[Path, Path]], folder: Path) -> None:
@@ -487,13 +344,14 @@ def write_reports(
     """
     work = Path(tempfile.mkdtemp(prefix="vbi-report-"))
     kernel = None
+    printers: list[Printer] = []
     try:
         (work / "tmp").mkdir()
         (work / "out").mkdir()
         names = [s.name if isinstance(s, ReportJob) else _name(Path(s).stem) for s in sources]
         folder = check_output(output_dir, names, pdf)
         jobs = [s if isinstance(s, ReportJob) else load_job(s) for s in sources]
-        kernel = _Kernel(work)
+        kernel = Kernel(work)
         kernel.start()
         threading.Thread(target=_preload, daemon=True).start()
         kernel.ready()
@@ -506,17 +364,20 @@ def write_reports(
             files.append((html, folder / html.name))
             target_pdf = None
             if pdf:
-                printed = html.with_suffix(".pdf")
-                _print_pdf(html, printed, work)
-                target_pdf = folder / printed.name
-                files.append((printed, target_pdf))
+                printers.append(Printer(html, html.with_suffix(".pdf"), work))
+                target_pdf = folder / f"{job.name}.pdf"
+                files.append((html.with_suffix(".pdf"), target_pdf))
             results.append(ReportFiles(folder / html.name, target_pdf))
         kernel.stop()
         kernel = None
+        for printer in printers:
+            printer.wait()
         _commit(files, folder)
         return results
     finally:
         with _signals_held():
+            for printer in printers:
+                printer.stop()
             if kernel is not None:
                 kernel.stop()
             shutil.rmtree(work, ignore_errors=True)
