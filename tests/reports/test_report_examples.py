@@ -6,9 +6,10 @@ import os
 from pathlib import Path
 
 import pytest
+import yaml
 from conftest import ROOT, SHARED_DATA
 
-from vbi_lib.reports import SCHEMA, load_job
+from vbi_lib.reports import SCHEMA, load_job, read_parameters
 
 EXAMPLES = sorted((ROOT / "examples").glob("*.yaml"))
 
@@ -41,3 +42,18 @@ def test_every_key_is_documented() -> None:
     text = (ROOT / "examples" / "README.md").read_text()
     missing = [key for key in keys(SCHEMA) if f"| `{key}` |" not in text]
     assert not missing, f"examples/README.md does not document {missing}"
+
+
+def test_the_readme_example_is_the_example_file() -> None:
+    readme = (ROOT / "README.md").read_text()
+    block = readme.split("```yaml\n", 1)[1].split("```", 1)[0]
+    shown = read_parameters(yaml.safe_load(block))
+    example = load_job(ROOT / "examples" / "generated-road.yaml").parameters
+    assert shown.profile.file is None  # it runs on a generated road: no file needed
+    assert (shown.bridge, shown.vehicle, shown.profile, shown.speeds, shown.title) == (
+        example.bridge,
+        example.vehicle,
+        example.profile,
+        example.speeds,
+        example.title,
+    )
