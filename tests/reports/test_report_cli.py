@@ -247,3 +247,15 @@ def test_papermill_runs_the_template_on_the_same_file(folder: Path) -> None:
     )
     assert "A 30 m bridge" in html and "The tyre stayed on the road" in html
     assert "parameters given directly" in html  # papermill does not pass the file's name
+
+
+def test_the_flat_form_checks_its_output_file_before_running(folder: Path) -> None:
+    from vbi_lib.reports import legacy
+
+    flat = {"span": "100 ft", "k_mid": "497527 lbf/in", "first_frequency": "3.99 Hz"}
+    (folder / "report.html").mkdir()
+    with pytest.raises(running.OutputError, match="report.html is a folder"):
+        legacy.make_report(folder / "report.html", **flat)
+    with pytest.raises(running.OutputError, match="must be an .html file"):
+        legacy.make_report(folder / "report", **flat)
+    assert list((folder / "tmp").iterdir()) == []
