@@ -280,6 +280,14 @@ def prepare(parameters: ReportParameters) -> ReportInputs:
         f"An approach of {length:.0f} m ({length / u.ft:.0f} ft) is placed before the bridge"
         f"{rule}: {what}.",
     )
+    needed = approach_length(vehicle, fastest)
+    if approach is not None and length < needed:
+        notes.insert(
+            1,
+            f"That approach is shorter than the {needed:.0f} m the truck's start-up motion "
+            f"needs to decay to {DECAY:.0%} at {fastest / u.kph:.0f} km/h: the fastest "
+            "crossings may reach the bridge still moving from their start.",
+        )
     return ReportInputs(
         parameters=p,
         bridge=bridge,
