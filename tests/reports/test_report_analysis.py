@@ -14,6 +14,13 @@ from vbi_lib.reports import render as R
 from vbi_lib.reports.analysis import allowances, shifted_deck
 
 
+@pytest.fixture(autouse=True)
+def _display_restored():  # noqa: ANN202
+    """Tests here choose display units; the session's default (SI, alongside) comes back."""
+    yield
+    display.set_units("SI")
+
+
 def case(iso_class: str = "A", **vehicle: object) -> dict:
     return {
         "title": "<img src=x onerror=alert(1)> & co",
