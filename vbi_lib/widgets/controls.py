@@ -102,15 +102,20 @@ class _Text(Unicode):
 
 
 class _Control:
-    """What every control adds: the parameter it sets, its unit and who hears its refusals."""
+    """What every control adds: the parameter it sets, its unit and who hears its refusals.
+
+    Comes first among a control's bases, so that it takes ``parameter`` and ``unit`` and
+    hands the other keywords to the ipywidgets class.
+    """
 
     parameter: str = ""
     unit: str = ""
 
-    def _setup(self, parameter: str, unit: str) -> None:
+    def __init__(self, parameter: str, unit: str = "", **kwargs: Any) -> None:
         self.parameter = parameter
         self.unit = unit
         self.listeners: list[Callable[[str], None]] = []
+        super().__init__(**kwargs)
         self.add_class(f"vbi-control-{parameter}")
 
 
@@ -134,10 +139,6 @@ class FloatControl(_Control, w.FloatSlider):
 
     value = _Number(0.0).tag(sync=True)
 
-    def __init__(self, parameter: str, unit: str = "", **kwargs: Any) -> None:
-        self._setup(parameter, unit)
-        super().__init__(**kwargs)
-
     @validate("value")
     def _validate_value(self, proposal: Any) -> float:
         return _clamped(self, proposal["value"])
@@ -148,10 +149,6 @@ class IntControl(_Control, w.IntSlider):
 
     value = _Whole(0).tag(sync=True)
 
-    def __init__(self, parameter: str, unit: str = "", **kwargs: Any) -> None:
-        self._setup(parameter, unit)
-        super().__init__(**kwargs)
-
     @validate("value")
     def _validate_value(self, proposal: Any) -> int:
         return int(_clamped(self, proposal["value"]))
@@ -160,10 +157,6 @@ class IntControl(_Control, w.IntSlider):
 class ChoiceControl(_Control, w.Dropdown):
     """A drop-down list for one parameter; a value not offered is refused by name."""
 
-    def __init__(self, parameter: str, unit: str = "", **kwargs: Any) -> None:
-        self._setup(parameter, unit)
-        super().__init__(**kwargs)
-
     @validate("value")
     def _validate_value(self, proposal: Any) -> Any:
         return _offered(self, proposal["value"])
@@ -171,10 +164,6 @@ class ChoiceControl(_Control, w.Dropdown):
 
 class FlagControl(_Control, w.ToggleButtons):
     """Two buttons for a yes/no option (the values are ``True`` and ``False``)."""
-
-    def __init__(self, parameter: str, unit: str = "", **kwargs: Any) -> None:
-        self._setup(parameter, unit)
-        super().__init__(**kwargs)
 
     @validate("value")
     def _validate_value(self, proposal: Any) -> Any:
@@ -195,19 +184,11 @@ class TextControl(_Control, w.Text):
 
     value = _Text("").tag(sync=True)
 
-    def __init__(self, parameter: str, unit: str = "", **kwargs: Any) -> None:
-        self._setup(parameter, unit)
-        super().__init__(continuous_update=False, **kwargs)
-
 
 class RangeControl(_Control, w.FloatRangeSlider):
     """A (low, high) pair of one parameter, both finite, inside the range, low < high."""
 
     value = _Pair(default_value=(0.0, 1.0)).tag(sync=True)
-
-    def __init__(self, parameter: str, unit: str = "", **kwargs: Any) -> None:
-        self._setup(parameter, unit)
-        super().__init__(**kwargs)
 
     @validate("value")
     def _validate_value(self, proposal: Any) -> tuple[float, float]:
@@ -273,6 +254,7 @@ SPECS: dict[str, dict[str, Any]] = {
         "kind": TextControl,
         "description": "profile file",
         "placeholder": "path of a two-column file",
+        "continuous_update": False,
         "style": {"description_width": "12em"},
     },
     "profile_unit": _choice("file unit", [(n, n) for n in ("in", "ft", "mm", "m")]),
