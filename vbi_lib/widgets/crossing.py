@@ -139,4 +139,4 @@ def _kept(limits: tuple[float, float], low: float, high: float) -> tuple[float, 
     fits = limits[0] <= low and high <= limits[1]
     if fits and high - low >= 0.5 * (limits[1] - limits[0]):
         return limits
-    return _padded(low, high, 0.1)
+    return _padded(low, high, 0.15)
