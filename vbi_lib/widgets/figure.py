@@ -5,7 +5,9 @@ The explorers keep one :class:`~matplotlib.figure.Figure` each, built once with 
 moves.  :meth:`FigureImage.render` then sends one PNG to the page.  Lines registered as
 *dynamic* are drawn over a cached image of everything else (blitting), so while the axes'
 limits and the static artists stay the same an update draws only those lines; a change of
-the limits, or :meth:`FigureImage.invalidate`, redraws the whole figure once.  No pyplot
+the limits, or :meth:`FigureImage.invalidate` (the caller's duty when anything else
+changed), redraws the whole figure once.  A figure without dynamic artists is always drawn
+whole.  No pyplot
 figure is created, so nothing depends on the notebook's matplotlib backend.
 """
 
@@ -66,7 +68,8 @@ class FigureImage:
     def render(self) -> None:
         """Draw what changed and send the figure to the page as a PNG (light compression)."""
         limits = [(ax.get_xlim(), ax.get_ylim()) for ax in self.figure.axes]
-        if self._background is None or limits != self._limits:
+        # without dynamic artists whatever changed is in the background: draw it all
+        if not self._dynamic or self._background is None or limits != self._limits:
             self.canvas.draw()  # everything but the dynamic artists
             self._background = self.canvas.copy_from_bbox(self.figure.bbox)
             self._limits = limits

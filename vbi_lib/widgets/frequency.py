@@ -202,8 +202,18 @@ class FrequencyExplorer(Explorer):
         self.cax = figure.add_axes((0.82, 0.11, 0.03, 0.85))
         self.image = None
         style = {"color": "w", "lw": 1, "ls": "--", "alpha": 0.8}
-        self.bridge_resonance = self.ax.plot([], [], **style)[0]
-        self.truck_resonance = self.ax.plot([], [], **{**style, "ls": ":"})[0]
+        self.bridge_resonance = self.ax.plot([], [], label="v/λ = bridge f₁", **style)[0]
+        self.truck_resonance = self.ax.plot([], [], label="v/λ = truck f", **{**style, "ls": ":"})[
+            0
+        ]
+        self.resonance_legend = self.ax.legend(
+            handles=[self.bridge_resonance, self.truck_resonance],
+            loc="lower right",
+            fontsize=8,
+            facecolor="0.3",
+            labelcolor="w",
+            framealpha=0.6,
+        )
         self._empty = figure.text(0.45, 0.5, "", ha="center", va="center", fontsize=12)
 
     def _compute(self) -> FrequencyMap:
@@ -274,6 +284,7 @@ class FrequencyExplorer(Explorer):
     def _resonances(self, scenario: Scenario, bridge: object, result: FrequencyMap) -> None:
         """On a harmonic road: where ``v / lambda`` meets f1 (dashed) and the truck (dotted)."""
         wavelength = scenario.wavelength()
+        self.resonance_legend.set_visible(wavelength is not None)
         if wavelength is None:
             self.bridge_resonance.set_data([], [])
             self.truck_resonance.set_data([], [])

@@ -60,6 +60,9 @@ MAX_MODES = 20
 
 _INTEGERS = {"n_spans", "seed", "modes"}
 _TEXTS = {"road", "iso_class", "profile_path", "profile_unit"}
+_POSITIVE = ("span_ft", "bridge_frequency_hz", "bridge_weight_kip_per_ft", "truck_weight_kip",
+             "truck_frequency_hz", "speed_mph", "c10_e6", "waviness", "wavelength_ft",
+             "bump_width_ft")  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -148,9 +151,7 @@ class Scenario:
                 check.number(name, value)
                 if not math.isfinite(value):
                     raise ValueError(f"{name}={value!r} must be a finite number")
-        for name in ("span_ft", "bridge_frequency_hz", "bridge_weight_kip_per_ft"):
-            check.positive(name, getattr(self, name))
-        for name in ("truck_weight_kip", "truck_frequency_hz", "speed_mph"):
+        for name in _POSITIVE:
             check.positive(name, getattr(self, name))
         check.damping_ratio("bridge_damping", self.bridge_damping)
         check.damping_ratio("truck_damping", self.truck_damping)
@@ -159,8 +160,6 @@ class Scenario:
             raise ValueError(f"road={self.road!r} is not offered; use one of {', '.join(ROADS)}")
         if self.iso_class not in ISO_CLASS_MEANS:
             raise ValueError(f"iso_class={self.iso_class!r} must be one of 'A' to 'H'")
-        for name in ("c10_e6", "waviness", "wavelength_ft", "bump_width_ft"):
-            check.positive(name, getattr(self, name))
         for name in ("amplitude_in", "road_shift_ft", "approach_ft"):
             check.non_negative(name, getattr(self, name))
         if self.seed < 0:
@@ -298,10 +297,9 @@ class Scenario:
         )
 
 
-def _whole(name: str, value: object) -> int:
+def _whole(name: str, value: object) -> None:
     if isinstance(value, bool | np.bool_) or not isinstance(value, numbers.Integral):
         raise TypeError(f"{name}={value!r} must be a whole number")
-    return int(value)
 
 
 def _measured(path_text: str, unit: str) -> Profile:
