@@ -1,0 +1,222 @@
+"""The frame every explorer shares: controls, a readout, a note line and one figure.
+
+An explorer recomputes when a control changes (:meth:`Explorer.update`).  If the controls
+describe no valid crossing (a file that cannot be read, a road too short for the bridge), the
+readout says why and shows no number, ``result`` becomes ``None`` and the figure is emptied,
+so what is on the page always matches the controls.  A value a control refuses or clamps is
+explained on the note line (see :mod:`vbi_lib.widgets.controls`).
+"""
+
+from __future__ import annotations
+
+import tempfile
+from pathlib import Path
+from typing import Any, ClassVar
+
+import ipywidgets as w
+
+from .controls import ROAD_PARAMETERS, make_controls
+from .figure import FigureImage
+from .readouts import error_html, notice_html
+from .scenario import Scenario
+
+__all__ = ["Explorer"]
+
+_SCENARIO_FIELDS = set(Scenario.__dataclass_fields__)
+
+#: The panel's sections and the parameters in each, in the order shown.
+SECTIONS = {
+    "Bridge": (
+        "span_ft",
+        "n_spans",
+        "bridge_frequency_hz",
+        "bridge_weight_kip_per_ft",
+        "bridge_damping",
+    ),
+    "Truck": ("truck_weight_kip", "truck_frequency_hz", "truck_damping"),
+    "Speed": ("speed_mph", "speed_range_mph", "n_speeds"),
+    "Truck-to-bridge frequency ratio": ("ratio_range", "n_ratios"),
+    "Road": (
+        "road",
+        "iso_class",
+        "c10_e6",
+        "waviness",
+        "seed",
+        "wavelength_ft",
+        "amplitude_in",
+        "bump_height_in",
+        "bump_width_ft",
+        "bump_position_ft",
+        "profile_path",
+        "profile_unit",
+        "road_shift_ft",
+        "approach_ft",
+    ),
+    "Model": ("modes", "coupled"),
+}
+
+
+class Explorer:
+    """Base class: subclasses list their ``parameters`` and compute, draw and describe.
+
+    Attributes
+    ----------
+    controls
+        The controls by the parameter each sets.
+    widget
+        The box to display.
+    result
+        The last result, or ``None`` when the controls describe no valid crossing.
+    error
+        Why there is no result (the readout's sentence), else ``None``.
+    """
+
+    parameters: ClassVar[tuple[str, ...]] = ()
+    #: Start values that differ from :class:`Scenario`'s for this explorer.
+    defaults: ClassVar[dict[str, Any]] = {}
+    figure_size: ClassVar[tuple[float, float]] = (7.2, 4.6)
+
+    def __init__(self, **values: Any) -> None:
+        self.result: Any = None
+        self.error: str | None = None
+        self.controls = make_controls(self.parameters, {**self.defaults, **values})
+        self.readout = w.HTML()
+        self.notice = w.HTML()
+        self.view = FigureImage(self.figure_size)
+        self._holding = False
+        self._fresh_notice = False
+        self._uploads = tempfile.TemporaryDirectory(prefix="vbi-profiles-")
+        self.upload = w.FileUpload(
+            accept=".csv,.txt,.dat,.prn", multiple=False, description="upload profile"
+        )
+        self.upload.observe(self._uploaded, names="value")
+        for control in self.controls.values():
+            control.listeners.append(self._note)
+            control.observe(self._changed, names="value")
+        self._setup_figure()
+        self.widget = w.HBox(
+            [self._panel(), w.VBox([self.readout, self.notice, *self._extras(), self.view.widget])]
+        )
+        self.widget.add_class("vbi-explorer")
+        self._show_road_controls()
+        self.update()
+
+    # ------------------------------------------------------------------ for subclasses
+    def _setup_figure(self) -> None:
+        """Create the figure's axes and artists (once)."""
+
+    def _extras(self) -> list[Any]:
+        """Widgets shown between the readout and the figure (a button, a progress bar)."""
+        return []
+
+    def _compute(self) -> Any:
+        """Compute the result of the current controls (may raise ``ValueError``/``TypeError``)."""
+        raise NotImplementedError
+
+    def _show(self, result: Any) -> None:
+        """Draw ``result`` and write the readout."""
+        raise NotImplementedError
+
+    def _blank(self) -> None:
+        """Empty the figure (there is no result)."""
+
+    # ------------------------------------------------------------------ public
+    def values(self) -> dict[str, Any]:
+        """The controls' current values, by parameter."""
+        return {name: control.value for name, control in self.controls.items()}
+
+    def scenario(self) -> Scenario:
+        """The :class:`Scenario` of the controls (fields without a control keep the default).
+
+        Raises
+        ------
+        ValueError, TypeError
+            The controls' values do not make a valid scenario.
+        """
+        return Scenario(**{k: v for k, v in self.values().items() if k in _SCENARIO_FIELDS})
+
+    def set(self, **values: Any) -> Any:
+        """Set several controls at once and recompute once; returns :attr:`result`.
+
+        Raises
+        ------
+        ValueError
+            An unknown parameter, or a value a control refuses (the controls set before it
+            keep their new values and the explorer recomputes).
+        """
+        unknown = sorted(set(values) - set(self.controls))
+        if unknown:
+            raise ValueError(
+                f"{unknown} are not controls of this explorer; use {list(self.controls)}"
+            )
+        self._holding = True
+        try:
+            for name, value in values.items():
+                self.controls[name].value = value
+        finally:
+            self._holding = False
+            self._show_road_controls()
+            self.update()
+        return self.result
+
+    def update(self) -> Any:
+        """Recompute from the controls and redraw; returns :attr:`result` (``None`` if invalid)."""
+        try:
+            result = self._compute()
+        except (ValueError, TypeError) as exc:
+            self.result, self.error = None, str(exc)
+            self.readout.value = error_html(self.error)
+            self._blank()
+            self.view.render()
+            return None
+        self.result, self.error = result, None
+        self._show(result)
+        return result
+
+    # ------------------------------------------------------------------ plumbing
+    def _note(self, message: str) -> None:
+        self.notice.value = notice_html(message)
+        self._fresh_notice = True
+
+    def _changed(self, change: dict[str, Any]) -> None:
+        if not self._fresh_notice:
+            self.notice.value = ""
+        self._fresh_notice = False
+        if self._holding:
+            return
+        if change["owner"] is self.controls.get("road"):
+            self._show_road_controls()
+        self._moved()
+
+    def _moved(self) -> None:
+        """A control moved (not inside :meth:`set`): recompute at once."""
+        self.update()
+
+    def _uploaded(self, change: dict[str, Any]) -> None:
+        if not change["new"] or "profile_path" not in self.controls:
+            return
+        item = change["new"][0]
+        path = Path(self._uploads.name) / Path(item["name"]).name
+        path.write_bytes(bytes(item["content"]))
+        self.set(road="measured", profile_path=str(path))
+
+    def _show_road_controls(self) -> None:
+        if "road" not in self.controls:
+            return
+        used = set(ROAD_PARAMETERS[self.controls["road"].value])
+        for name in {p for group in ROAD_PARAMETERS.values() for p in group}:
+            if name in self.controls:
+                self.controls[name].layout.display = "" if name in used else "none"
+        self.upload.layout.display = "" if "profile_path" in used else "none"
+
+    def _panel(self) -> w.VBox:
+        rows: list[Any] = []
+        for title, names in SECTIONS.items():
+            present = [self.controls[n] for n in names if n in self.controls]
+            if not present:
+                continue
+            rows.append(w.HTML(f"<b>{title}</b>"))
+            rows.extend(present)
+            if title == "Road" and "profile_path" in self.controls:
+                rows.insert(rows.index(self.controls["profile_path"]) + 1, self.upload)
+        return w.VBox(rows, layout=w.Layout(min_width="28em"))

@@ -1,0 +1,167 @@
+"""The explorers' readouts: the DAF in words, never without the model's validity beside it.
+
+Every readout that shows a DAF says in the same sentence whether the truck kept contact with
+the road.  The study's sprung mass is attached to the road; when the computed contact force
+becomes tensile a real tyre would lift off, so such a DAF is printed only with the words
+"outside the model's validity" (see :mod:`vbi_lib.validity`).  Code allowances come from
+:mod:`vbi_lib.amplification` as DAFs (``1 + IM``).
+
+>>> daf_text([1.0874, float("nan")])
+'DAF 1.087'
+>>> daf_text([1.0874, 1.05])
+'DAF 1.087 (span 1), 1.050 (span 2)'
+"""
+
+from __future__ import annotations
+
+import html
+from collections.abc import Callable, Sequence
+
+import numpy as np
+
+from .. import amplification, display
+from ..bridges import Bridge
+from ..models import Crossing
+
+__all__ = [
+    "code_allowances",
+    "crossing_html",
+    "daf_text",
+    "error_html",
+    "largest_daf",
+    "sweep_html",
+]
+
+_BAD = "color:#a40000"
+_GOOD = "color:#1f6f1f"
+
+
+def code_allowances(bridge: Bridge) -> dict[str, float]:
+    """The design codes' DAF (``1 + IM``) for this bridge, by code.
+
+    AASHTO LRFD (Table 3.6.2.1-1, all limit states but fatigue and joints), AASHTO Standard
+    (``1 + 50 / (L + 125)``, ``L`` the span in feet) and OHBDC 1983 (from the first frequency).
+    """
+    return {
+        "AASHTO LRFD": 1.0 + amplification.aashto_lrfd_allowance(),
+        "AASHTO Standard": 1.0 + float(amplification.aashto_standard_impact(bridge.span)),
+        "OHBDC 1983": 1.0 + float(amplification.ohbdc_1983_allowance(bridge.first_frequency_hz)),
+    }
+
+
+def daf_text(dafs: Sequence[float]) -> str:
+    """``"DAF 1.087"`` for one span, one value per span otherwise (NaN spans left out)."""
+    values = [float(d) for d in dafs if np.isfinite(d)]
+    if len(values) == 1:
+        return f"DAF {values[0]:.3f}"
+    return "DAF " + ", ".join(f"{d:.3f} (span {j + 1})" for j, d in enumerate(values))
+
+
+def _codes(bridge: Bridge) -> str:
+    codes = ", ".join(f"{name} {value:.2f}" for name, value in code_allowances(bridge).items())
+    return f"design codes' DAF: {codes}"
+
+
+def _contact(min_ratio: float, tension: float) -> str:
+    if min_ratio < 0.0:
+        return (
+            f'<span style="{_BAD}"><b>the tyre would leave the road</b> (the contact force '
+            f"fell to {min_ratio:.2f} &times; the weight and was tensile for {tension:.0%} of "
+            "the time on the bridge): this DAF is outside the model's validity</span>"
+        )
+    return (
+        f'<span style="{_GOOD}">contact held</span> (smallest contact force '
+        f"{min_ratio:.2f} &times; the weight)"
+    )
+
+
+def crossing_html(crossing: Crossing, road: str, model: str) -> str:
+    """The readout of one crossing: DAF and contact, codes, inputs and the model that ran."""
+    bridge, truck = crossing.bridge, crossing.vehicle
+    lines = [
+        f"<b>{daf_text(crossing.daf)}</b> &mdash; "
+        + _contact(crossing.min_contact_force_ratio, crossing.tension_fraction),
+        f"largest contact force {crossing.contact_force_amplification:.2f} &times; the weight; "
+        + _codes(bridge),
+        f"bridge {display.fmt(bridge.span, 'length')} &times; {bridge.n_spans}, "
+        f"f&#8321; {bridge.first_frequency_hz:.2f} Hz; truck {display.fmt(truck.weight, 'weight')}"
+        f", {truck.frequency_hz:.2f} Hz; speed {display.fmt(crossing.speed, 'speed')}; "
+        f"road: {html.escape(road, quote=False)}",
+        f"model: {html.escape(model, quote=False)}; largest step {crossing.dt * 1e3:.2f} ms",
+    ]
+    return '<div class="vbi-readout">' + "<br>".join(lines) + "</div>"
+
+
+def sweep_html(
+    daf: np.ndarray,
+    min_contact_force_ratio: np.ndarray,
+    bridge: Bridge,
+    what: Callable[[int], str],
+    model: str,
+    done: int | None = None,
+) -> str:
+    """The readout of a sweep: the largest DAF that kept contact, and how many did not.
+
+    Parameters
+    ----------
+    daf, min_contact_force_ratio
+        ``(n, 2)`` DAF of each span and ``(n,)`` smallest contact force over the weight of
+        each crossing (NaN rows: not computed yet).
+    bridge
+        For the code allowances.
+    what
+        A crossing's setting in words (``"at 55 mph"``), from its index.
+    model
+        Which model ran, in words.
+    done
+        Crossings computed so far, while the sweep runs.
+    """
+    daf = largest_daf(np.asarray(daf))
+    computed = np.isfinite(daf)
+    lost = computed & (np.asarray(min_contact_force_ratio) < 0.0)
+    kept = computed & ~lost
+    parts = []
+    if done is not None:
+        parts.append(f"<i>computing: {done} of {daf.size} crossings done&hellip;</i>")
+    if kept.any():
+        best = int(np.flatnonzero(kept)[np.argmax(daf[kept])])
+        parts.append(
+            f"<b>largest DAF {daf[best]:.3f}</b> {what(best)}, among crossings that kept contact"
+        )
+    n_lost = int(lost.sum())
+    if n_lost:
+        worst = int(np.flatnonzero(lost)[np.argmax(daf[lost])])
+        parts.append(
+            f'<span style="{_BAD}"><b>{n_lost} of {int(computed.sum())} crossings lost '
+            f"contact</b> (marked &times;): the tyre would leave the road, so their DAFs (up to "
+            f"{daf[worst]:.3f} {what(worst)}) are outside the model's validity</span>"
+        )
+    elif computed.any():
+        parts.append(f'<span style="{_GOOD}">every crossing kept contact</span>')
+    parts.append(_codes(bridge))
+    parts.append(f"model: {html.escape(model, quote=False)}")
+    return '<div class="vbi-readout">' + "<br>".join(parts) + "</div>"
+
+
+def largest_daf(daf: np.ndarray) -> np.ndarray:
+    """The larger DAF of the spans, row by row, shape ``(n,)`` (NaN where none is computed)."""
+    out = np.full(daf.shape[0], np.nan)
+    rows = np.isfinite(daf).any(axis=1)
+    out[rows] = np.nanmax(daf[rows], axis=1)
+    return out
+
+
+def error_html(message: str) -> str:
+    """The readout when the controls describe no valid crossing: no number, the reason."""
+    return (
+        f'<div class="vbi-readout" style="{_BAD}"><b>No result for these settings.</b> '
+        f"{html.escape(message, quote=False)}</div>"
+    )
+
+
+def notice_html(message: str) -> str:
+    """A note on a control's value (refused or clamped); empty text gives an empty note."""
+    if not message:
+        return ""
+    text = html.escape(message, quote=False)
+    return f'<div class="vbi-notice" style="color:#8a5a00">&#9888; {text}</div>'

@@ -1,0 +1,327 @@
+"""What an explorer's controls describe: one crossing, in the study's engineering units.
+
+A :class:`Scenario` holds the values of the controls (US customary units, as the study's
+tables) and turns them into the library's SI inputs: a :class:`~vbi_lib.Bridge`
+(:meth:`~vbi_lib.Bridge.from_frequency`: span, mass per length and first frequency), a
+:class:`~vbi_lib.Vehicle` (the study's sprung mass (85), from its weight, bounce frequency and
+damping ratio), the road the truck drives on and the options of :func:`vbi_lib.simulate`.
+
+The road is one of :data:`ROADS`.  Generated roads start at station 0 (where the truck starts,
+at rest) and are sampled every inch, as the study's; the first support is ``approach_ft``
+further on.  ``road_shift_ft`` slides the road back under the truck and the bridge: after the
+shift, station ``x`` carries the elevation the unshifted road has at ``x + shift``, so a bump
+or a rough patch meets the bridge earlier.  Generated roads are made long enough for the
+largest shift (:data:`MAX_ROAD_SHIFT_FT`), so that shifting slides one road instead of drawing
+a new one.
+
+>>> s = Scenario(span_ft=80, n_spans=2, bridge_frequency_hz=4.2, road="flat")
+>>> round(s.bridge().first_frequency_hz, 6), s.bridge().n_spans
+(4.2, 2)
+>>> s.simulate_options()
+{'model': 'one-coordinate', 'coupled': True}
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from dataclasses import dataclass, fields, replace
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+
+from .. import _validation as check
+from .. import units as u
+from ..bridges import Bridge
+from ..profile_files import LENGTH_UNITS
+from ..profiles import ISO_CLASS_MEANS, Profile
+from ..vehicles import Vehicle
+
+__all__ = ["MAX_MODES", "MAX_ROAD_SHIFT_FT", "ROADS", "ROAD_SPACING", "Scenario"]
+
+#: The kinds of road an explorer offers: key and what the control shows.
+ROADS = {
+    "flat": "flat",
+    "harmonic": "harmonic",
+    "bump": "one bump",
+    "iso-class": "ISO 8608 class",
+    "iso-c10": "ISO 8608 C10 and waviness",
+    "measured": "measured profile file",
+}
+
+#: Sample spacing of the generated roads [m] (one inch, as the study's profiles).
+ROAD_SPACING = 1 * u.inch
+
+#: Largest position shift of a generated road [ft]; generated roads are this much longer.
+MAX_ROAD_SHIFT_FT = 200.0
+
+#: Most beam modes the many-mode model is offered with.
+MAX_MODES = 20
+
+_INTEGERS = {"n_spans", "seed", "modes"}
+_TEXTS = {"road", "iso_class", "profile_path", "profile_unit"}
+_POSITIVE = ("span_ft", "bridge_frequency_hz", "bridge_weight_kip_per_ft", "truck_weight_kip",
+             "truck_frequency_hz", "speed_mph", "c10_e6", "waviness", "wavelength_ft",
+             "bump_width_ft")  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """One crossing as the controls describe it (US customary units; damping as fractions).
+
+    Parameters
+    ----------
+    span_ft, n_spans
+        Length of each span [ft]; 1 (simple span) or 2 (two equal continuous spans).
+    bridge_frequency_hz, bridge_weight_kip_per_ft, bridge_damping
+        First natural frequency [Hz], weight per length [kip/ft] (the mass is weight / g) and
+        damping ratio of the bridge.
+    truck_weight_kip, truck_frequency_hz, truck_damping
+        The sprung mass's weight [kip], undamped bounce frequency [Hz] and damping ratio.
+    speed_mph
+        Truck speed [mph].
+    road
+        A key of :data:`ROADS`.
+    iso_class
+        ``"A"`` to ``"H"`` for ``road="iso-class"`` (waviness 2, ISO 8608's).
+    c10_e6, waviness
+        ``C10`` [1e-6 m^3] and waviness for ``road="iso-c10"``.
+    seed
+        Seed of the random phases of an ISO 8608 road.
+    wavelength_ft, amplitude_in
+        Wavelength [ft] and amplitude [in] of a harmonic road.
+    bump_height_in, bump_width_ft, bump_position_ft
+        A raised-cosine bump (a dip if the height is negative): height [in], base length
+        [ft] and crest station from the first support [ft] (negative: on the approach).
+    profile_path, profile_unit
+        A measured profile file (two columns, station and elevation, read with
+        :func:`vbi_lib.read_profile`) and the unit of both columns.
+    road_shift_ft
+        How far the road slides back under the bridge [ft].
+    approach_ft
+        Road before the first support [ft] (from the first station of the road).
+    modes
+        1: the study's one-coordinate model; more: the many-mode model with that many modes.
+    coupled
+        ``False`` for the decoupled model (the contact force ignores the bridge's motion).
+
+    Raises
+    ------
+    ValueError, TypeError
+        A value of the wrong kind or outside what the model allows, named as the field.
+    """
+
+    span_ft: float = 100.0
+    n_spans: int = 1
+    bridge_frequency_hz: float = 3.0
+    bridge_weight_kip_per_ft: float = 4.6
+    bridge_damping: float = 0.01
+    truck_weight_kip: float = 77.2
+    truck_frequency_hz: float = 3.5
+    truck_damping: float = 0.10
+    speed_mph: float = 41.0
+    road: str = "iso-class"
+    iso_class: str = "B"
+    c10_e6: float = 300.0
+    waviness: float = 2.0
+    seed: int = 1
+    wavelength_ft: float = 30.0
+    amplitude_in: float = 0.25
+    bump_height_in: float = 1.0
+    bump_width_ft: float = 3.0
+    bump_position_ft: float = 0.0
+    profile_path: str = ""
+    profile_unit: str = "in"
+    road_shift_ft: float = 0.0
+    approach_ft: float = 320.0
+    modes: int = 1
+    coupled: bool = True
+
+    def __post_init__(self) -> None:
+        for item in fields(self):
+            name, value = item.name, getattr(self, item.name)
+            if name == "coupled":
+                check.flag(name, value)
+            elif name in _TEXTS:
+                if not isinstance(value, str):
+                    raise TypeError(f"{name}={value!r} must be text")
+            elif name in _INTEGERS:
+                _whole(name, value)
+            else:
+                check.number(name, value)
+                if not math.isfinite(value):
+                    raise ValueError(f"{name}={value!r} must be a finite number")
+        for name in _POSITIVE:
+            check.positive(name, getattr(self, name))
+        check.damping_ratio("bridge_damping", self.bridge_damping)
+        check.damping_ratio("truck_damping", self.truck_damping)
+        check.n_spans(self.n_spans)
+        if self.road not in ROADS:
+            raise ValueError(f"road={self.road!r} is not offered; use one of {', '.join(ROADS)}")
+        if self.iso_class not in ISO_CLASS_MEANS:
+            raise ValueError(f"iso_class={self.iso_class!r} must be one of 'A' to 'H'")
+        for name in ("amplitude_in", "road_shift_ft", "approach_ft"):
+            check.non_negative(name, getattr(self, name))
+        if self.seed < 0:
+            raise ValueError(f"seed={self.seed!r} must be a whole number >= 0")
+        if self.profile_unit not in LENGTH_UNITS:
+            raise ValueError(
+                f"profile_unit={self.profile_unit!r} is not a length unit; use one of "
+                f"{', '.join(LENGTH_UNITS)}"
+            )
+        if not 1 <= self.modes <= MAX_MODES:
+            raise ValueError(f"modes={self.modes!r} must be a whole number from 1 to {MAX_MODES}")
+        if self.road != "measured" and self.road_shift_ft > MAX_ROAD_SHIFT_FT:
+            raise ValueError(
+                f"road_shift_ft={self.road_shift_ft!r} must be at most {MAX_ROAD_SHIFT_FT:g} "
+                "for a generated road (it is generated that much longer)"
+            )
+
+    # ------------------------------------------------------------------ the model's inputs
+    def bridge(self) -> Bridge:
+        """The bridge [SI]: :meth:`~vbi_lib.Bridge.from_frequency` of span, mass and f1."""
+        mass = self.bridge_weight_kip_per_ft * u.kip / u.ft / u.g
+        return Bridge.from_frequency(
+            self.span_ft * u.ft, self.n_spans, mass, self.bridge_frequency_hz, self.bridge_damping
+        )
+
+    def vehicle(self) -> Vehicle:
+        """The sprung mass [SI] (85): mass = weight / g, undamped bounce frequency, damping."""
+        mass = self.truck_weight_kip * u.kip / u.g
+        return Vehicle.from_frequency(mass, self.truck_frequency_hz, self.truck_damping)
+
+    @property
+    def speed(self) -> float:
+        """Truck speed [m/s]."""
+        return self.speed_mph * u.mph
+
+    def profile(self) -> Profile:
+        """The road the truck drives on, after the position shift (stations in metres).
+
+        Raises
+        ------
+        ValueError
+            No file for a measured road, a file that cannot be read, or a shift longer than
+            the road.
+        """
+        base = self._base_road()
+        shift = self.road_shift_ft * u.ft
+        if shift == 0.0:
+            return base
+        if shift >= base.length:
+            raise ValueError(
+                f"road_shift_ft={self.road_shift_ft:g} must be shorter than the road "
+                f"({base.length / u.ft:.0f} ft); shift it less"
+            )
+        # slide the road back: station x now carries the elevation the road had at x + shift
+        return base.segment(base.start + shift, base.end).shifted(-shift)
+
+    def bridge_start(self, profile: Profile) -> float:
+        """Station of the first support on ``profile`` [m]: ``approach_ft`` after its start."""
+        return profile.start + self.approach_ft * u.ft
+
+    def simulate_options(self) -> dict[str, object]:
+        """The keyword options of :func:`vbi_lib.simulate` this scenario runs with."""
+        if self.modes == 1:
+            return {"model": "one-coordinate", "coupled": self.coupled}
+        return {"model": "modal", "modes": self.modes, "coupled": self.coupled}
+
+    def model_text(self) -> str:
+        """Which model runs, in words, for the explorer's readout."""
+        if self.modes == 1:
+            what = "the study's one-coordinate model (integrated with RK4)"
+        else:
+            what = f"{self.modes} exact beam modes (integrated with Newmark average acceleration)"
+        coupling = "coupled" if self.coupled else "decoupled: the bridge does not move the wheel"
+        return f"{what}, {coupling}"
+
+    def road_text(self) -> str:
+        """The road in words: its kind, its parameters and the shift."""
+        if self.road == "flat":
+            text = "flat"
+        elif self.road == "harmonic":
+            text = (
+                f"harmonic, wavelength {self.wavelength_ft:g} ft, "
+                f"amplitude {self.amplitude_in:g} in"
+            )
+        elif self.road == "bump":
+            text = (
+                f"bump {self.bump_height_in:g} in high, {self.bump_width_ft:g} ft long, "
+                f"crest {self.bump_position_ft:g} ft from the first support"
+            )
+        elif self.road == "iso-class":
+            text = f"ISO 8608 class {self.iso_class} (w = 2), seed {self.seed}"
+        elif self.road == "iso-c10":
+            text = f"ISO 8608 C10 = {self.c10_e6:g}e-6 m³, w = {self.waviness:g}, seed {self.seed}"
+        else:
+            text = f"measured, {self.profile_path} (stations and elevations in {self.profile_unit})"
+        if self.road_shift_ft:
+            text += f", shifted {self.road_shift_ft:g} ft"
+        return text
+
+    def wavelength(self) -> float | None:
+        """The road's wavelength [m] if it is harmonic, else ``None``."""
+        return self.wavelength_ft * u.ft if self.road == "harmonic" else None
+
+    def replace(self, **changes: object) -> Scenario:
+        """A copy with some fields changed (checked again)."""
+        return replace(self, **changes)
+
+    # ------------------------------------------------------------------ roads
+    def _base_road(self) -> Profile:
+        if self.road == "measured":
+            return _measured(self.profile_path, self.profile_unit)
+        length = (self.approach_ft + self.n_spans * self.span_ft + MAX_ROAD_SHIFT_FT) * u.ft
+        if self.road == "flat":
+            return Profile.flat(length, ROAD_SPACING)
+        if self.road == "harmonic":
+            return Profile.harmonic(
+                length, ROAD_SPACING, self.wavelength_ft * u.ft, self.amplitude_in * u.inch
+            )
+        if self.road == "bump":
+            return Profile.bump(
+                length,
+                ROAD_SPACING,
+                position=(self.approach_ft + self.bump_position_ft) * u.ft,
+                height=self.bump_height_in * u.inch,
+                width=self.bump_width_ft * u.ft,
+            )
+        if self.road == "iso-class":
+            return Profile.iso8608(length, ROAD_SPACING, iso_class=self.iso_class, seed=self.seed)
+        return Profile.iso8608(
+            length,
+            ROAD_SPACING,
+            c10=self.c10_e6 * 1e-6,
+            waviness=self.waviness,
+            seed=self.seed,
+        )
+
+
+def _whole(name: str, value: object) -> None:
+    if isinstance(value, bool | np.bool_) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name}={value!r} must be a whole number")
+
+
+def _measured(path_text: str, unit: str) -> Profile:
+    if not path_text.strip():
+        raise ValueError(
+            "profile_path is empty: type the path of a measured profile file (two columns, "
+            "station and elevation) or upload one"
+        )
+    path = Path(path_text.strip()).expanduser()
+    try:
+        stat = path.stat()
+    except OSError:
+        raise ValueError(
+            f"profile_path={path_text!r} is not a file that can be read; check the path"
+        ) from None
+    return _read(str(path.resolve()), stat.st_mtime_ns, stat.st_size, unit)
+
+
+@lru_cache(maxsize=8)
+def _read(path: str, mtime_ns: int, size: int, unit: str) -> Profile:
+    """A measured profile, read once per version of the file (the key holds its mtime)."""
+    from ..profile_files import read_profile
+
+    return read_profile(path, unit=unit)
