@@ -19,9 +19,13 @@ import threading
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import pytest
 from conftest import ROOT, BookBuild
+
+if TYPE_CHECKING:
+    from playwright.sync_api import Page, Route
 
 CHROMIUM = Path("/usr/bin/chromium")
 CHROMIUM_ARGS = [
@@ -139,13 +143,13 @@ def test_every_page_renders_offline(book_build: BookBuild, book_server: str) -> 
             )
             report = PageReport("")
 
-            def route(route_: object) -> None:
-                url = route_.request.url  # type: ignore[attr-defined]
+            def route(route_: Route) -> None:
+                url = route_.request.url
                 if url.startswith(book_server):
-                    route_.continue_()  # type: ignore[attr-defined]
+                    route_.continue_()
                 else:
                     report.outside.append(url)
-                    route_.abort("blockedbyclient")  # type: ignore[attr-defined]
+                    route_.abort("blockedbyclient")
 
             context.route("**/*", route)
             page = context.new_page()
@@ -203,28 +207,27 @@ def test_every_page_renders_offline(book_build: BookBuild, book_server: str) -> 
 
 
 def _check_widgets(
-    page: object, views: int, report: PageReport, timeout_error: type[Exception]
+    page: Page, views: int, report: PageReport, timeout_error: type[Exception]
 ) -> None:
     """Every saved view is drawn by the HTML manager from the page's saved widget state."""
-    state = page.locator('script[type="application/vnd.jupyter.widget-state+json"]')  # type: ignore[attr-defined]
-    if not state.count():
+    if not page.locator('script[type="application/vnd.jupyter.widget-state+json"]').count():
         report.widgets.append(f"{views} widget views but no saved widget state")
         return
-    drawn = page.locator(".jupyter-widgets.widget-container, .jupyter-widgets .widget-inline-hbox")  # type: ignore[attr-defined]
     try:
-        page.wait_for_function(  # type: ignore[attr-defined]
+        page.wait_for_function(
             f"() => document.querySelectorAll('.jupyter-widgets').length >= {views}",
             timeout=20_000,
         )
     except timeout_error:
         pass  # the views that did not appear are reported below
-    rendered = page.evaluate(  # type: ignore[attr-defined]
+    # the manager draws each view beside its <script> tag, in the same cell output
+    heights = page.evaluate(
         """(selector) => [...document.querySelectorAll(selector)].map((script) => {
              const box = script.parentElement.querySelector('.jupyter-widgets');
              return box ? box.getBoundingClientRect().height : 0;
            })""",
         WIDGET_VIEW,
     )
-    empty = [i for i, height in enumerate(rendered) if height <= 0]
+    empty = [i for i, height in enumerate(heights) if height <= 0]
     if empty:
-        report.widgets.append(f"views {empty} of {views} not drawn ({drawn.count()} drawn)")
+        report.widgets.append(f"views {empty} of {views} not drawn")
