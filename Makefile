@@ -1,6 +1,7 @@
 # Two entry points for a fresh clone (see README):
-#   make book   set up .venv, execute every notebook afresh, build the HTML book in _build/html
-#   make test   set up .venv, run the whole test suite (library, notebooks, book, lint)
+#   make book   set up .venv and the book's browser assets, execute every notebook afresh,
+#               build the HTML book in _build/html
+#   make test   the same set-up, then run the whole test suite (library, notebooks, book, lint)
 # and two live routes:
 #   make explore   serve the explorers as a Voila app on http://127.0.0.1:$(PORT)/
 #   make lab       open JupyterLab on the chapters (notebooks/) and the explorers (explore/)
@@ -10,7 +11,15 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: setup book test benchmarks clean explore lab
+# MathJax, RequireJS and the ipywidgets HTML manager, installed from the npm registry at the
+# versions locked in book/assets/package-lock.json and copied into book/assets/static/vendor,
+# which Sphinx copies into the book's _static folder: the pages load nothing from a CDN.
+ASSETS_DIR := book/assets
+NODE_MODULES := $(ASSETS_DIR)/node_modules
+VENDOR := $(ASSETS_DIR)/static/vendor
+ASSETS := $(ASSETS_DIR)/static/.installed
+
+.PHONY: setup assets book test benchmarks clean explore lab
 
 $(STAMP): requirements.txt pyproject.toml
 	@$(PYTHON) -c 'import sys; assert sys.version_info[:2] == (3, 11), "vbi needs Python 3.11, found " + sys.version.split()[0]'
@@ -22,12 +31,31 @@ $(STAMP): requirements.txt pyproject.toml
 
 setup: $(STAMP)
 
-book: setup
+$(ASSETS): $(ASSETS_DIR)/package.json $(ASSETS_DIR)/package-lock.json
+	@command -v npm >/dev/null || { echo "make: the book's browser assets need npm (Node.js 18 or newer); install it, e.g. apt-get install -y npm"; exit 1; }
+	npm ci --prefix $(ASSETS_DIR) --ignore-scripts --no-audit --no-fund --loglevel=error
+	rm -rf $(ASSETS_DIR)/static
+	mkdir -p $(VENDOR)/mathjax/output $(VENDOR)/html-manager
+	cp -r $(NODE_MODULES)/mathjax/es5/tex-mml-chtml.js $(NODE_MODULES)/mathjax/es5/input \
+	    $(NODE_MODULES)/mathjax/es5/ui $(NODE_MODULES)/mathjax/es5/a11y \
+	    $(NODE_MODULES)/mathjax/es5/sre $(NODE_MODULES)/mathjax/es5/adaptors $(VENDOR)/mathjax/
+	cp -r $(NODE_MODULES)/mathjax/es5/output/chtml $(VENDOR)/mathjax/output/
+	cp $(NODE_MODULES)/mathjax/LICENSE $(VENDOR)/mathjax/
+	cp $(NODE_MODULES)/requirejs/require.js $(VENDOR)/
+	cp $(NODE_MODULES)/@jupyter-widgets/html-manager/dist/embed-amd.js \
+	    $(NODE_MODULES)/@jupyter-widgets/html-manager/dist/*.{woff,woff2,ttf,eot,svg} \
+	    $(NODE_MODULES)/@jupyter-widgets/html-manager/dist/embed.js.LICENSE.txt \
+	    $(VENDOR)/html-manager/
+	touch $(ASSETS)
+
+assets: $(ASSETS)
+
+book: setup assets
 	rm -rf _build/html _build/.jupyter_cache _build/jupyter_execute
 	$(VENV)/bin/jupyter-book build . -W --keep-going
 	@echo "Open _build/html/index.html in a browser."
 
-test: setup
+test: setup assets
 	$(PY) -m pytest
 
 # Voila runs explore/explore.ipynb in a kernel and shows only its outputs; 127.0.0.1 only.
