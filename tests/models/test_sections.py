@@ -253,3 +253,17 @@ def test_bad_section_input_is_refused_with_a_sentence() -> None:
         run.sections([3.0]).plot(effect="torque")
     with pytest.raises(ValueError, match="sense='top'"):
         run.sections([3.0]).extreme_index("moment", "top")
+
+
+def test_sections_must_be_stations() -> None:
+    bridge = vbi.Bridge(10.0, 1, EI, MBAR)
+    run = vbi.simulate(bridge, vbi.Vehicle(1e4, 1e6, 0.0), vbi.Profile.flat(12.0, 0.05), 10.0,
+                       1.0, model="modal", modes=2)  # fmt: skip
+    with pytest.raises(ValueError, match=r"x=\[\] must give one or more stations"):
+        run.sections([])
+    with pytest.raises(ValueError, match="x='mid' must be stations"):
+        run.moment_at("mid")
+    # the static counterpart is shared by crossings of the same bridge and vehicle
+    again = vbi.simulate(bridge, vbi.Vehicle(1e4, 1e6, 0.0), vbi.Profile.flat(12.0, 0.05),
+                         12.0, 1.0, model="modal", modes=2)  # fmt: skip
+    assert run.sections([5.0]).static is again.sections([5.0]).static

@@ -39,6 +39,18 @@ def _spans(n: int) -> str:
     return "1 span" if n == 1 else f"{n} spans"
 
 
+def _stations(x: object) -> np.ndarray:
+    """Stations from the bridge start as a 1-D float array of at least one (range checked
+    where the modes are evaluated)."""
+    try:
+        sections = np.atleast_1d(np.asarray(x, dtype=float)).ravel()
+    except (TypeError, ValueError):
+        raise ValueError(f"x={x!r} must be stations [m] from the bridge start") from None
+    if sections.size == 0:
+        raise ValueError(f"x={x!r} must give one or more stations [m] from the bridge start")
+    return sections
+
+
 @dataclass(frozen=True, eq=False, kw_only=True)
 class Crossing:
     """One crossing: time histories (SI, displacements positive up) and the DAF of each span.
@@ -138,7 +150,7 @@ class Crossing:
         return loads[:, None], (self.position - self.bridge_start)[:, None]
 
     def _section(self, x: float | np.ndarray, effect: str, method: str) -> np.ndarray:
-        sections = np.atleast_1d(np.asarray(x, dtype=float)).ravel()
+        sections = _stations(x)
         modes, q = self.modal_history()
         loads, positions = self._axles()
         values = section_history(modes, q, loads, positions, sections, effect, method)
@@ -206,7 +218,7 @@ class Crossing:
             A station off the bridge, an unknown method.
         """
         method = check_method(method)
-        sections = np.atleast_1d(np.asarray(x, dtype=float)).ravel()
+        sections = _stations(x)
         modes, _ = self.modal_history()
         static = static_counterpart(
             modes, sections, np.array([self.vehicle.weight]), np.zeros(1), method

@@ -41,6 +41,7 @@ single shape, the first mode: it gives the exact statics plus one mode's dynamic
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 import pandas as pd
@@ -146,11 +147,34 @@ def static_counterpart(
     axle_offsets: np.ndarray,
     method: str = "mode-acceleration",
 ) -> StaticEnvelope:
-    """The static envelope the method's DAF divides by: exact, or from the N modes."""
-    if check_method(method) == "mode-displacement":
-        return _modal_envelope(modes, sections, axle_loads, axle_offsets)
-    bridge = modes.bridge
-    return static_envelope(bridge.spans, bridge.EI, sections, axle_loads, axle_offsets)
+    """The static envelope the method's DAF divides by: exact, or from the N modes.
+
+    Memoised: a study asks for the same bridge, axles and sections crossing after crossing.
+    """
+    method = check_method(method)
+    key = tuple(float(x) for x in np.ravel(sections))
+    loads = tuple(float(p) for p in np.ravel(axle_loads))
+    offsets = tuple(float(o) for o in np.ravel(axle_offsets))
+    if method == "mode-displacement":
+        return _cached_modal(modes, key, loads, offsets)
+    return _cached_exact(modes.bridge.spans, modes.bridge.EI, key, loads, offsets)
+
+
+def _frozen(envelope_: StaticEnvelope) -> StaticEnvelope:
+    for array in vars(envelope_).values():
+        array.setflags(write=False)
+    return envelope_
+
+
+@lru_cache(maxsize=256)
+def _cached_exact(spans: tuple, EI: float, sections: tuple, loads: tuple, offsets: tuple):  # noqa: ANN202, N803
+    return _frozen(static_envelope(spans, EI, sections, loads, offsets))
+
+
+@lru_cache(maxsize=256)
+def _cached_modal(modes: BeamModes, sections: tuple, loads: tuple, offsets: tuple):  # noqa: ANN202
+    arrays = (np.array(sections), np.array(loads), np.array(offsets))
+    return _frozen(_modal_envelope(modes, *arrays))
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
