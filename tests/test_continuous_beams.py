@@ -1,13 +1,15 @@
 """Modes of beams continuous over any spans, against published ratios, closed forms and FE.
 
-References: the three-equal-span frequency ratios 1, 1.2815, 1.8713, 4.0 (Blevins, *Formulas
-for Natural Frequency and Mode Shape*, table 8-3); the textbook modes of one span and of two
-equal spans (sine and propped-cantilever families), written here; a fine beam finite-element
-model written in ``tests/beam_fe.py``; mass and stiffness orthogonality by quadrature.
+References: the three-equal-span frequency ratios 1, 1.2815, 1.8713, 4.0 (Blevins,
+*Formulas for Natural Frequency and Mode Shape*, beams on equally spaced supports); the
+textbook modes of one span and of two equal spans (sine and propped-cantilever families),
+written here; a fine beam finite-element model written in ``tests/beam_fe.py``; mass and
+stiffness orthogonality by quadrature.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -158,6 +160,11 @@ def test_continuous_bridge_layout_and_the_study_beam() -> None:
     assert beam_modes(same, 4) is beam_modes(vbi.Bridge(20.0, 2, EI, MBAR), 4)
     assert same.study_layout and "2 spans x 20.00 m" in repr(same)
     assert "18.00 + 27.50 + 22.00 m" in repr(bridge)
+    # the study's bridges stay plain dataclasses: replace() changes a span as before
+    longer = dataclasses.replace(vbi.Bridge(20.0, 2, EI, MBAR), span=25.0)
+    assert longer.spans == (25.0, 25.0) and longer.supports == (0.0, 25.0, 50.0)
+    stiffer = dataclasses.replace(bridge, EI=2 * EI)
+    assert stiffer.spans == bridge.spans and stiffer.EI == 2 * EI
 
 
 @pytest.mark.parametrize(
@@ -183,7 +190,7 @@ def test_bad_layouts_are_named() -> None:
     with pytest.raises(ValueError, match=r"n_spans=3 .*Bridge.continuous"):
         vbi.Bridge(10.0, 3, EI, MBAR)
     with pytest.raises(ValueError, match="must be the longest span"):
-        vbi.Bridge(10.0, 2, EI, MBAR, spans=(10.0, 12.0))
+        vbi.Bridge(10.0, 2, EI, MBAR, span_lengths=(10.0, 12.0))
     with pytest.raises(ValueError, match="EI=0.0"):
         vbi.Bridge.continuous([10.0, 12.0], EI=0.0, mass_per_length=MBAR)
     with pytest.raises(ValueError, match="count=0"):

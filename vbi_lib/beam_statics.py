@@ -6,7 +6,7 @@ exact part of the mode-acceleration method come from here.
 **A point load on a continuous beam.**  Supports :math:`0 = s_0 < s_1 < \dots < s_N` (pinned,
 no deflection), spans :math:`L_j = s_{j} - s_{j-1}`, one :math:`EI`.  The moments over the
 interior supports follow from the three-moment equation (Clapeyron; e.g. Timoshenko & Young,
-*Theory of Structures*, §10): at support :math:`i`,
+*Theory of Structures*): at support :math:`i`,
 
 .. math::
     M_{i-1} L_i + 2 M_i (L_i + L_{i+1}) + M_{i+1} L_{i+1} =

@@ -43,29 +43,32 @@ class Bridge:
     """A uniform beam over one or more spans: the bridge along the truck's path.
 
     ``Bridge(span, n_spans, EI, mass_per_length)`` is the study's beam, one span or two equal
-    continuous spans; :meth:`continuous` builds any other layout and fills ``spans``.
+    continuous spans; :meth:`continuous` builds any other layout (``span_lengths``).  Every
+    bridge gives its layout as :attr:`spans`, :attr:`supports` and :attr:`midspans`.
 
     Parameters
     ----------
     span
         Length of each span ``L`` [m] (for unequal spans, the longest).
     n_spans
-        1 (simple span) or 2 (two equal continuous spans); any number with ``spans``.
+        1 (simple span) or 2 (two equal continuous spans); any number with ``span_lengths``.
     EI
         Flexural rigidity [N m^2].
     mass_per_length
         Mass per unit length ``mbar`` [kg/m].
     damping_ratio
         Fraction of critical damping of every mode, in [0, 1).
-    spans
-        The span lengths from the start of the bridge [m]; ``None`` means ``n_spans`` equal
-        spans of ``span`` (and is filled in).
+    span_lengths
+        The span lengths from the start of the bridge [m], for layouts other than the
+        study's (set by :meth:`continuous`); ``None`` for ``n_spans`` equal spans of
+        ``span``, and so for one span or two equal spans whichever way they are given (so
+        that ``dataclasses.replace(bridge, span=...)`` works on the study's bridges).
 
     Raises
     ------
     ValueError
         A value outside what is allowed, named in the message; ``n_spans`` other than 1 or
-        2 without ``spans``; ``span`` and ``n_spans`` that disagree with ``spans``.
+        2 without ``span_lengths``; ``span`` and ``n_spans`` that disagree with them.
 
     Examples
     --------
@@ -82,23 +85,22 @@ class Bridge:
     EI: float
     mass_per_length: float
     damping_ratio: float = 0.01
-    spans: tuple[float, ...] | None = None
+    span_lengths: tuple[float, ...] | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "span", check.positive("span", self.span))
-        if self.spans is None:
+        if self.span_lengths is None:
             object.__setattr__(self, "n_spans", check.n_spans(self.n_spans))
-            object.__setattr__(self, "spans", (self.span,) * self.n_spans)
         else:
-            spans = _span_lengths(self.spans)
-            if self.n_spans != len(spans) or not math.isclose(self.span, max(spans), rel_tol=1e-12):
+            lengths = _span_lengths(self.span_lengths)
+            if self.n_spans != len(lengths) or self.span != max(lengths):
                 raise ValueError(
                     f"span={self.span!r} and n_spans={self.n_spans!r} must be the longest span "
-                    f"and the number of spans of spans={self.spans!r}; build continuous "
-                    "bridges with Bridge.continuous(spans, EI=..., mass_per_length=...)"
+                    f"and the number of spans of span_lengths={self.span_lengths!r}; build "
+                    "continuous bridges with Bridge.continuous(spans, EI=..., mass_per_length=...)"
                 )
-            object.__setattr__(self, "n_spans", len(spans))
-            object.__setattr__(self, "spans", spans)
+            study = len(lengths) <= 2 and all(length == lengths[0] for length in lengths)
+            object.__setattr__(self, "span_lengths", None if study else lengths)
         object.__setattr__(self, "EI", check.positive("EI", self.EI))
         object.__setattr__(
             self, "mass_per_length", check.positive("mass_per_length", self.mass_per_length)
@@ -149,6 +151,13 @@ class Bridge:
         """
         lengths = _span_lengths(spans)
         return cls(max(lengths), len(lengths), EI, mass_per_length, damping_ratio, lengths)
+
+    @property
+    def spans(self) -> tuple[float, ...]:
+        """The span lengths from the start of the bridge [m], ``n_spans`` of them."""
+        if self.span_lengths is None:
+            return (self.span,) * self.n_spans
+        return self.span_lengths
 
     # ------------------------------------------------------------------ constructors
     @classmethod

@@ -239,7 +239,7 @@ def natural_wavenumbers(spans: object, count: int) -> np.ndarray:
     Examples
     --------
     Three equal spans: 1, 1.2815, 1.8713 and 4 times the simple span's first frequency
-    (Blevins, *Formulas for Natural Frequency and Mode Shape*, table 8-3):
+    (Blevins, *Formulas for Natural Frequency and Mode Shape*, continuous beams):
 
     >>> k = natural_wavenumbers([1.0, 1.0, 1.0], 4)
     >>> ((k / math.pi) ** 2).round(4)

@@ -9,7 +9,7 @@ positive), the moment (sagging positive) and the shear (:math:`V = dM/dx`):
   moment converges slowly in :math:`N` (terms fall as :math:`1/n^2`) and the shear hardly at
   all under a concentrated load (terms as :math:`1/n`, with Gibbs' overshoot at the load);
 * **mode-acceleration** method (the default; e.g. Craig & Kurdila, *Fundamentals of
-  Structural Dynamics*, §14.5; Chopra, *Dynamics of Structures*, §12.12): each
+  Structural Dynamics*; Chopra, *Dynamics of Structures*): each
   :math:`q_n` is split by its equation of motion into the static response to the current
   loads and an inertia and damping part; the static part, summed over *all* modes, is the
   exact static response of the beam to the axle loads :math:`R_i(t)` at their positions
