@@ -12,6 +12,7 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 
 from . import (
     amplification,
+    beam_statics,
     closed_forms,
     display,
     models,
@@ -56,6 +57,7 @@ __all__ = [
     "Vehicle",
     "amplification",
     "beam_modes",
+    "beam_statics",
     "closed_forms",
     "contact_force_amplification",
     "display",

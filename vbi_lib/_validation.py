@@ -43,11 +43,13 @@ def damping_ratio(name: str, value: float) -> float:
 
 
 def n_spans(value: int) -> int:
-    """The number of equal spans the one-coordinate model supports: 1 or 2."""
+    """The number of equal spans of the study's beam and formulas: 1 or 2."""
     if value not in (1, 2) or isinstance(value, bool):
         raise ValueError(
             f"n_spans={value!r} is not supported; use 1 (simple span) or 2 "
-            "(two equal continuous spans)"
+            "(two equal continuous spans), or build other layouts with "
+            "Bridge.continuous(spans, EI=..., mass_per_length=...) and run them with "
+            "model='modal'"
         )
     return int(value)
 

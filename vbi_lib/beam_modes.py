@@ -1,10 +1,15 @@
 r"""Exact free-vibration modes of the uniform beam of a bridge (Euler-Bernoulli).
 
-The many-mode crossing model (:mod:`vbi_lib.models.modal`) and the static influence lines use
-the bridge's first ``N`` mass-normalised modes,
+The many-mode crossing model (:mod:`vbi_lib.models.modal`), the section responses
+(:mod:`vbi_lib.models.sections`) and the static influence lines use the bridge's first ``N``
+mass-normalised modes,
 
 .. math:: u_b(x, t) = \sum_{n=1}^{N} \phi_n(x)\, q_n(t),
-    \qquad \int_0^{NL} \bar m\, \phi_m \phi_n \, dx = \delta_{mn},
+    \qquad \int_0^{\ell} \bar m\, \phi_m \phi_n \, dx = \delta_{mn},
+
+for a beam continuous over any spans (:meth:`vbi_lib.Bridge.continuous`), computed exactly
+by :mod:`vbi_lib.continuous_beams`.  Two layouts have textbook forms, which the general
+solution reproduces to rounding (``tests/test_beam_modes.py``):
 
 * one simple span: :math:`\phi_n = \sqrt{2/(\bar m L)}\,\sin(n\pi x/L)`,
   :math:`\omega_n = (n\pi/L)^2\sqrt{EI/\bar m}`;
@@ -14,10 +19,11 @@ the bridge's first ``N`` mass-normalised modes,
   is a propped cantilever (pinned at its outer end, no slope over the middle support),
   :math:`\phi(s) \propto \sin\lambda s - \sin\lambda L\,\sinh\lambda s / \sinh\lambda L`
   with :math:`s` measured from the nearer outer end and :math:`\tan\lambda L = \tanh\lambda L`
-  (:math:`\lambda L = 3.9266, 7.0686, \dots`), :math:`\omega = \lambda^2\sqrt{EI/\bar m}`;
-  the two families are merged in order of frequency.
+  (:math:`\lambda L = 3.9266, 7.0686, \dots`), :math:`\omega = \lambda^2\sqrt{EI/\bar m}`.
 
-The first mode of either beam is the study's shape function :math:`\psi` (33), (59).
+The first mode of either is the study's shape function :math:`\psi` (33), (59).  Over any
+number of *equal* spans the first frequency is the simple span's; three equal spans have
+1, 1.2815, 1.8713 and 4 times it (Blevins, *Formulas for Natural Frequency and Mode Shape*).
 
 Static deflection
 -----------------
@@ -41,6 +47,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from . import _validation as check
 from .bridges import Bridge
+from .continuous_beams import mode_coefficients, natural_wavenumbers, shape_derivatives
 
 __all__ = [
     "BeamModes",
@@ -49,8 +56,6 @@ __all__ = [
     "propped_cantilever_roots",
     "static_deflection_line",
 ]
-
-SINE, PROPPED = 0, 1
 
 
 def propped_cantilever_roots(count: int) -> np.ndarray:
@@ -80,45 +85,52 @@ def propped_cantilever_roots(count: int) -> np.ndarray:
 
 
 @numba.njit(cache=True)
-def shape_values(xi, kind, kappa, amp, span, phi, dphi, ddphi):
-    """Mode shapes, slopes and curvatures at ``xi`` (from the bridge start) into the arrays."""
-    for n in range(kind.shape[0]):
+def shape_values(xi, supports, kappa, coef, phi, dphi, ddphi):
+    """Mode shapes, slopes and curvatures at ``xi`` (from the bridge start) into the arrays.
+
+    ``supports`` (n_spans + 1) are the support stations from the bridge start, ``kappa``
+    (N) the wavenumbers and ``coef`` (N, n_spans, 4) the coefficients ``(a, b, c, d)`` of
+    ``a sin ks + b cos ks + c exp(-ks) + d exp(-k (L_j - s))`` in each span.
+    """
+    n_spans = supports.shape[0] - 1
+    j = 0
+    while j < n_spans - 1 and xi > supports[j + 1]:
+        j += 1
+    s = xi - supports[j]
+    rest = supports[j + 1] - xi
+    for n in range(kappa.shape[0]):
         k = kappa[n]
-        if kind[n] == SINE:
-            s = math.sin(k * xi)
-            phi[n] = amp[n] * s
-            dphi[n] = amp[n] * k * math.cos(k * xi)
-            ddphi[n] = -amp[n] * k * k * s
-        else:
-            mirrored = xi > span
-            s = 2.0 * span - xi if mirrored else xi
-            # sinh(k s)/sinh(k L) and cosh(k s)/sinh(k L) without overflow
-            e = math.exp(k * (s - span))
-            e2 = math.exp(-2.0 * k * s)
-            d = 1.0 - math.exp(-2.0 * k * span)
-            shr = e * (1.0 - e2) / d
-            chr_ = e * (1.0 + e2) / d
-            sl = math.sin(k * span)
-            phi[n] = amp[n] * (math.sin(k * s) - sl * shr)
-            slope = amp[n] * k * (math.cos(k * s) - sl * chr_)
-            dphi[n] = -slope if mirrored else slope
-            ddphi[n] = amp[n] * k * k * (-math.sin(k * s) - sl * shr)
+        a = coef[n, j, 0]
+        b = coef[n, j, 1]
+        c = coef[n, j, 2]
+        d = coef[n, j, 3]
+        sn = math.sin(k * s)
+        cs = math.cos(k * s)
+        e0 = math.exp(-k * s)
+        e1 = math.exp(-k * rest)
+        phi[n] = a * sn + b * cs + c * e0 + d * e1
+        dphi[n] = k * (a * cs - b * sn - c * e0 + d * e1)
+        ddphi[n] = k * k * (-a * sn - b * cs + c * e0 + d * e1)
 
 
 @dataclass(frozen=True, eq=False)
 class BeamModes:
-    """The first N mass-normalised Euler-Bernoulli modes of a one- or two-span beam.
+    """The first N mass-normalised Euler-Bernoulli modes of a bridge's continuous beam.
+
+    In span ``j`` (local ``s`` from its left support) mode ``n`` is
+    ``a sin ks + b cos ks + c exp(-ks) + d exp(-k (L_j - s))``
+    (:mod:`vbi_lib.continuous_beams`).
 
     Attributes
     ----------
     bridge
         The beam.
-    kind
-        ``0`` sine mode, ``1`` symmetric (propped-cantilever) mode of two spans.
+    supports
+        Support stations from the bridge start [m], shape ``(n_spans + 1,)``.
     wavenumber
-        ``n pi / L`` or ``lambda`` [1/m].
-    amplitude
-        Factor that normalises the mode to unit generalised mass [kg^-1/2].
+        ``k_n`` [1/m], shape ``(N,)``; ``omega_n = k_n^2 sqrt(EI / mbar)``.
+    coefficients
+        ``(a, b, c, d)`` of every mode in every span [kg^-1/2], shape ``(N, n_spans, 4)``.
     omega
         Circular frequencies [rad/s], increasing.
 
@@ -131,9 +143,9 @@ class BeamModes:
     """
 
     bridge: Bridge
-    kind: np.ndarray
+    supports: np.ndarray
     wavenumber: np.ndarray
-    amplitude: np.ndarray
+    coefficients: np.ndarray
     omega: np.ndarray
 
     @property
@@ -146,8 +158,20 @@ class BeamModes:
         """Natural frequencies [Hz]."""
         return self.omega / (2.0 * math.pi)
 
-    def _values(self, x_from_bridge_start: float | np.ndarray, which: int) -> np.ndarray:
-        xi = np.atleast_1d(np.asarray(x_from_bridge_start, dtype=float))
+    def derivative(self, x_from_bridge_start: float | np.ndarray, order: int) -> np.ndarray:
+        """``d^order phi_n / dx^order`` at stations from the bridge start, shape ``(n_x, N)``.
+
+        ``order`` 0 to 3 [kg^-1/2 m^-order].  At an interior support the third derivative
+        (shear) is the value just to the left of it.
+
+        Raises
+        ------
+        ValueError
+            A station off the bridge or not finite, an order outside 0-3.
+        """
+        if order not in (0, 1, 2, 3):
+            raise ValueError(f"order={order!r} must be 0, 1, 2 or 3")
+        xi = np.atleast_1d(np.asarray(x_from_bridge_start, dtype=float)).ravel()
         if not np.isfinite(xi).all():
             raise ValueError("x_from_bridge_start must be finite stations [m]")
         length = self.bridge.length
@@ -156,29 +180,21 @@ class BeamModes:
                 f"x_from_bridge_start must lie on the bridge, in [0, {length:g}] m; got values "
                 f"from {xi.min():g} to {xi.max():g}"
             )
-        out = np.empty((xi.size, self.count))
-        phi = np.empty(self.count)
-        dphi = np.empty(self.count)
-        ddphi = np.empty(self.count)
-        for i, value in enumerate(np.clip(xi, 0.0, length)):
-            shape_values(
-                value, self.kind, self.wavenumber, self.amplitude, self.bridge.span,
-                phi, dphi, ddphi,
-            )  # fmt: skip
-            out[i] = (phi, dphi, ddphi)[which]
-        return out
+        return shape_derivatives(
+            np.clip(xi, 0.0, length), self.supports, self.wavenumber, self.coefficients, order
+        )
 
     def shape(self, x_from_bridge_start: float | np.ndarray) -> np.ndarray:
         """``phi_n(x)`` [kg^-1/2], shape ``(n_x, N)``."""
-        return self._values(x_from_bridge_start, 0)
+        return self.derivative(x_from_bridge_start, 0)
 
     def slope(self, x_from_bridge_start: float | np.ndarray) -> np.ndarray:
         """``phi_n'(x)`` [kg^-1/2 m^-1], shape ``(n_x, N)``."""
-        return self._values(x_from_bridge_start, 1)
+        return self.derivative(x_from_bridge_start, 1)
 
     def curvature(self, x_from_bridge_start: float | np.ndarray) -> np.ndarray:
         """``phi_n''(x)`` [kg^-1/2 m^-2], shape ``(n_x, N)``."""
-        return self._values(x_from_bridge_start, 2)
+        return self.derivative(x_from_bridge_start, 2)
 
     def __repr__(self) -> str:
         shown = ", ".join(f"{f:.2f}" for f in self.frequencies_hz[:6])
@@ -186,38 +202,30 @@ class BeamModes:
         return f"BeamModes({self.count} modes of {self.bridge!r}: {shown}{more} Hz)"
 
 
-def _normalising_amplitude(lam: float, span: float, mass_per_length: float) -> float:
-    """Amplitude that gives a symmetric two-span mode unit generalised mass."""
-    nodes, weights = np.polynomial.legendre.leggauss(64)
-    # integrate over span in pieces short enough for the oscillation
-    pieces = max(4, int(math.ceil(lam * span / math.pi)) * 4)
-    edges = np.linspace(0.0, span, pieces + 1)
-    total = 0.0
-    sl = math.sin(lam * span)
-    for a, b in zip(edges[:-1], edges[1:], strict=True):
-        s = 0.5 * (a + b) + 0.5 * (b - a) * nodes
-        shr = (
-            np.exp(lam * (s - span)) * (1 - np.exp(-2 * lam * s)) / (1 - math.exp(-2 * lam * span))
-        )
-        shape = np.sin(lam * s) - sl * shr
-        total += 0.5 * (b - a) * float(np.sum(weights * shape**2))
-    return 1.0 / math.sqrt(2.0 * mass_per_length * total)
-
-
 @lru_cache(maxsize=256)
 def beam_modes(bridge: Bridge, modes: int) -> BeamModes:
     """The bridge's first ``modes`` exact Euler-Bernoulli modes, by increasing frequency.
 
+    Any layout of spans (:meth:`vbi_lib.Bridge.continuous`): the roots are counted with the
+    Wittrick-Williams algorithm so none is missed (:mod:`vbi_lib.continuous_beams`).  For one
+    span these are ``sqrt(2 / (mbar L)) sin(n pi x / L)``; for two equal spans the sine and
+    propped-cantilever families of the module docstring.
+
     Parameters
     ----------
     bridge
-        A one-span or two-equal-span beam (its span, EI and mass per length).
+        The beam (its spans, EI and mass per length).
     modes
         Number of modes N >= 1.
 
     Returns
     -------
     BeamModes
+
+    Raises
+    ------
+    TypeError, ValueError
+        ``bridge`` is not a :class:`~vbi_lib.Bridge`; ``modes`` is not a whole number >= 1.
 
     Examples
     --------
@@ -231,37 +239,17 @@ def beam_modes(bridge: Bridge, modes: int) -> BeamModes:
         raise TypeError(f"bridge must be a vbi.Bridge, got {type(bridge).__name__}")
     if isinstance(modes, bool) or not isinstance(modes, int | np.integer) or modes < 1:
         raise ValueError(f"modes={modes!r} must be a whole number of modes >= 1")
-    modes = int(modes)
-    L = bridge.span
-    mbar = bridge.mass_per_length
-    root = math.sqrt(bridge.EI / mbar)
-    kind, kappa, amp = [], [], []
-    if bridge.n_spans == 1:
-        for n in range(1, modes + 1):
-            kind.append(SINE)
-            kappa.append(n * math.pi / L)
-            amp.append(math.sqrt(2.0 / (mbar * L)))
-    else:
-        lambdas = propped_cantilever_roots(modes) / L
-        candidates = [(k * math.pi / L, SINE) for k in range(1, modes + 1)]
-        candidates += [(lam, PROPPED) for lam in lambdas]
-        candidates.sort()
-        for k, which in candidates[:modes]:
-            kind.append(which)
-            kappa.append(k)
-            if which == SINE:
-                amp.append(1.0 / math.sqrt(mbar * L))
-            else:
-                amp.append(_normalising_amplitude(k, L, mbar))
-    kappa_arr = np.array(kappa)
+    spans = np.array(bridge.spans)
+    kappa = natural_wavenumbers(spans, int(modes))
+    coef = np.array([mode_coefficients(spans, k, bridge.mass_per_length) for k in kappa])
     result = BeamModes(
         bridge=bridge,
-        kind=np.array(kind, dtype=np.int64),
-        wavenumber=kappa_arr,
-        amplitude=np.array(amp),
-        omega=kappa_arr**2 * root,
+        supports=np.array(bridge.supports),
+        wavenumber=kappa,
+        coefficients=np.ascontiguousarray(coef),
+        omega=kappa**2 * math.sqrt(bridge.EI / bridge.mass_per_length),
     )
-    for array in (result.kind, result.wavenumber, result.amplitude, result.omega):
+    for array in (result.supports, result.wavenumber, result.coefficients, result.omega):
         array.setflags(write=False)
     return result
 
@@ -287,6 +275,11 @@ def static_deflection_line(
     -------
     ndarray ``(n_positions, n_spans)`` [m], downward positive.
 
+    Raises
+    ------
+    ValueError
+        A negative force, a load position off the bridge.
+
     Examples
     --------
     Fifty modes give the exact midspan deflection of a simple span, ``P L^3 / 48 EI``:
@@ -311,8 +304,10 @@ def largest_static_deflection(bridge: Bridge, modes: int) -> tuple[float, ...]:
     at_mid = basis.shape(np.array(bridge.midspans))
     weights = at_mid / basis.omega**2
     results = []
+    supports = bridge.supports
     for j in range(bridge.n_spans):
-        xs = np.linspace(j * bridge.span, (j + 1) * bridge.span, 201)
+        length = supports[j + 1] - supports[j]
+        xs = np.linspace(supports[j], supports[j + 1], 201)
 
         def line(x: float, j: int = j) -> float:
             return float(basis.shape(x)[0] @ weights[j])
@@ -322,6 +317,6 @@ def largest_static_deflection(bridge: Bridge, modes: int) -> tuple[float, ...]:
         lo = xs[max(i - 1, 0)]
         hi = xs[min(i + 1, xs.size - 1)]
         best = minimize_scalar(lambda x, f=line: -f(x), bounds=(lo, hi), method="bounded",
-                               options={"xatol": 1e-10 * bridge.span})  # fmt: skip
+                               options={"xatol": 1e-10 * length})  # fmt: skip
         results.append(max(values[i], -best.fun))
     return tuple(results)

@@ -16,32 +16,59 @@ properties are (36)-(37), (62)-(63), (40)-(43):
 
 The first frequency of the one-coordinate model is the exact first frequency of the simple
 span, and of the two-span beam (whose first mode is the antisymmetric one).
+
+Continuous bridges
+------------------
+:meth:`Bridge.continuous` builds a uniform beam continuous over any number of spans of any
+lengths (pinned supports, no deflection at any of them).  Its exact modes come from
+:func:`vbi_lib.beam_modes` and its statics from :mod:`vbi_lib.beam_statics`; it runs with
+``model="modal"``.  The one-coordinate model and the study's formulas (the generalised
+properties, (82)-(84), (90)-(91)) hold for one span and two equal spans only, and refuse
+other layouts with a message saying what to use instead.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 
 from . import _validation as check
+from .continuous_beams import natural_wavenumbers, support_stations
 
 
 @dataclass(frozen=True)
 class Bridge:
-    """A one- or two-span uniform beam, the bridge of the one-coordinate model.
+    """A uniform beam over one or more spans: the bridge along the truck's path.
+
+    ``Bridge(span, n_spans, EI, mass_per_length)`` is the study's beam, one span or two equal
+    continuous spans; :meth:`continuous` builds any other layout (``span_lengths``).  Every
+    bridge gives its layout as :attr:`spans`, :attr:`supports` and :attr:`midspans`.
 
     Parameters
     ----------
     span
-        Length of each span ``L`` [m].
+        Length of each span ``L`` [m] (for unequal spans, the longest).
     n_spans
-        1 (simple span) or 2 (two equal continuous spans).
+        1 (simple span) or 2 (two equal continuous spans); any number with ``span_lengths``.
     EI
         Flexural rigidity [N m^2].
     mass_per_length
         Mass per unit length ``mbar`` [kg/m].
     damping_ratio
-        Fraction of critical damping of the first mode (mass-proportional), in [0, 1).
+        Fraction of critical damping of every mode, in [0, 1).
+    span_lengths
+        The span lengths from the start of the bridge [m], for layouts other than the
+        study's (set by :meth:`continuous`); ``None`` for ``n_spans`` equal spans of
+        ``span``, and so for one span or two equal spans whichever way they are given (so
+        that ``dataclasses.replace(bridge, span=...)`` works on the study's bridges).
+
+    Raises
+    ------
+    ValueError
+        A value outside what is allowed, named in the message; ``n_spans`` other than 1 or
+        2 without ``span_lengths``; ``span`` and ``n_spans`` that disagree with them.
 
     Examples
     --------
@@ -58,10 +85,22 @@ class Bridge:
     EI: float
     mass_per_length: float
     damping_ratio: float = 0.01
+    span_lengths: tuple[float, ...] | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "span", check.positive("span", self.span))
-        object.__setattr__(self, "n_spans", check.n_spans(self.n_spans))
+        if self.span_lengths is None:
+            object.__setattr__(self, "n_spans", check.n_spans(self.n_spans))
+        else:
+            lengths = _span_lengths(self.span_lengths)
+            if self.n_spans != len(lengths) or self.span != max(lengths):
+                raise ValueError(
+                    f"span={self.span!r} and n_spans={self.n_spans!r} must be the longest span "
+                    f"and the number of spans of span_lengths={self.span_lengths!r}; build "
+                    "continuous bridges with Bridge.continuous(spans, EI=..., mass_per_length=...)"
+                )
+            study = len(lengths) <= 2 and all(length == lengths[0] for length in lengths)
+            object.__setattr__(self, "span_lengths", None if study else lengths)
         object.__setattr__(self, "EI", check.positive("EI", self.EI))
         object.__setattr__(
             self, "mass_per_length", check.positive("mass_per_length", self.mass_per_length)
@@ -69,6 +108,56 @@ class Bridge:
         object.__setattr__(
             self, "damping_ratio", check.damping_ratio("damping_ratio", self.damping_ratio)
         )
+
+    @classmethod
+    def continuous(
+        cls,
+        spans: Sequence[float],
+        *,
+        EI: float,
+        mass_per_length: float,
+        damping_ratio: float = 0.01,
+    ) -> Bridge:
+        """A uniform beam continuous over ``spans`` (any number, any lengths), pinned supports.
+
+        One span, or two equal spans, give the same bridge as ``Bridge(span, n_spans, ...)``
+        (equal and with the same hash, so the same modes and results).  Run it with
+        ``model="modal"``; its modes are exact (:func:`vbi_lib.beam_modes`).
+
+        Parameters
+        ----------
+        spans
+            Span lengths from the start of the bridge [m], each > 0.
+        EI
+            Flexural rigidity [N m^2].
+        mass_per_length
+            Mass per unit length [kg/m].
+        damping_ratio
+            Fraction of critical damping of every mode, in [0, 1).
+
+        Raises
+        ------
+        ValueError
+            No spans, a span that is not a finite number > 0, or a bad EI, mass or damping.
+
+        Examples
+        --------
+        Three equal spans vibrate first at the simple span's frequency:
+
+        >>> b = Bridge.continuous([20.0, 20.0, 20.0], EI=1e10, mass_per_length=5000.0)
+        >>> b.supports, round(b.first_frequency_hz, 4) == round(Bridge(20.0, 1, 1e10, 5000.0)
+        ...                                                      .first_frequency_hz, 4)
+        ((0.0, 20.0, 40.0, 60.0), True)
+        """
+        lengths = _span_lengths(spans)
+        return cls(max(lengths), len(lengths), EI, mass_per_length, damping_ratio, lengths)
+
+    @property
+    def spans(self) -> tuple[float, ...]:
+        """The span lengths from the start of the bridge [m], ``n_spans`` of them."""
+        if self.span_lengths is None:
+            return (self.span,) * self.n_spans
+        return self.span_lengths
 
     # ------------------------------------------------------------------ constructors
     @classmethod
@@ -140,35 +229,86 @@ class Bridge:
         EI = omega**2 * mass_per_length * span**4 / math.pi**4
         return cls(span, n_spans, EI, mass_per_length, damping_ratio)
 
-    # ------------------------------------------------------------------ derived
+    # ------------------------------------------------------------------ layout
+    @property
+    def equal_spans(self) -> bool:
+        """Whether every span has the same length."""
+        return all(length == self.span for length in self.spans)
+
+    @property
+    def study_layout(self) -> bool:
+        """True for the study's beams, one span or two equal spans, where its formulas hold."""
+        return self.n_spans <= 2 and self.equal_spans
+
     @property
     def length(self) -> float:
-        """Total length ``N L`` [m]."""
-        return self.n_spans * self.span
+        """Total length ``sum L_j`` [m] (``N L`` for equal spans)."""
+        return self.supports[-1]
+
+    @property
+    def supports(self) -> tuple[float, ...]:
+        """Stations of the supports from the start of the bridge [m], ``n_spans + 1`` of them."""
+        return tuple(float(s) for s in support_stations(self.spans))
+
+    @property
+    def midspans(self) -> tuple[float, ...]:
+        """Positions of the midspans measured from the start of the bridge [m]."""
+        if self.equal_spans:
+            return tuple((j + 0.5) * self.span for j in range(self.n_spans))
+        supports = self.supports
+        return tuple(0.5 * (supports[j] + supports[j + 1]) for j in range(self.n_spans))
 
     @property
     def mass_per_span(self) -> float:
-        """Mass of one span ``mbar L`` [kg]."""
+        """Mass of one span ``mbar L`` [kg] (equal spans only)."""
+        if not self.equal_spans:
+            raise ValueError(
+                f"the spans {self.spans} differ, so there is no one mass per span; use "
+                "mass_per_length * spans[j]"
+            )
         return self.mass_per_length * self.span
 
+    # ------------------------------------------------------------------ frequency
     @property
     def first_frequency_hz(self) -> float:
-        """First natural frequency ``(pi / 2 L^2) sqrt(EI / mbar)`` [Hz] (37), (63)."""
+        """First natural frequency [Hz], ``(pi / 2 L^2) sqrt(EI / mbar)`` for equal spans (37).
+
+        For unequal spans, the exact first frequency of the continuous beam
+        (:func:`vbi_lib.continuous_beams.natural_wavenumbers`).
+        """
         return self.circular_frequency / (2.0 * math.pi)
 
     @property
     def circular_frequency(self) -> float:
-        """``omega_b = pi^2 sqrt(EI / (mbar L^4))`` [rad/s]."""
-        return math.pi**2 * math.sqrt(self.EI / (self.mass_per_length * self.span**4))
+        """``omega_b = pi^2 sqrt(EI / (mbar L^4))`` [rad/s] for equal spans; exact for any layout.
+
+        Over any number of equal spans the first mode is the simple span's (each span a half
+        sine), so the formula holds; for unequal spans ``k_1^2 sqrt(EI / mbar)`` with the
+        first root ``k_1`` of the continuous beam.
+        """
+        if self.equal_spans:
+            return math.pi**2 * math.sqrt(self.EI / (self.mass_per_length * self.span**4))
+        return _first_wavenumber(self.spans) ** 2 * math.sqrt(self.EI / self.mass_per_length)
+
+    # ------------------------------------------------------------------ the study's model
+    def _study_only(self, what: str) -> None:
+        if not self.study_layout:
+            raise NotImplementedError(
+                f"{what} is the study's formula for one span or two equal spans; this bridge "
+                f"has spans {self.spans} m.  Use model='modal' (exact modes of any layout) "
+                "and vbi.beam_statics for the beam's statics"
+            )
 
     @property
     def generalized_mass(self) -> float:
-        """``m* = N mbar L / 2`` [kg] (36), (62)."""
+        """``m* = N mbar L / 2`` [kg] (36), (62); one span or two equal spans."""
+        self._study_only("generalized_mass")
         return self.n_spans * self.mass_per_length * self.span / 2.0
 
     @property
     def generalized_stiffness(self) -> float:
-        """``k* = N pi^4 EI / (2 L^3)`` [N/m] (37), (63)."""
+        """``k* = N pi^4 EI / (2 L^3)`` [N/m] (37), (63); one span or two equal spans."""
+        self._study_only("generalized_stiffness")
         return self.n_spans * math.pi**4 * self.EI / (2.0 * self.span**3)
 
     @property
@@ -176,16 +316,16 @@ class Bridge:
         """``c* = 2 zeta omega_b m*`` [N s/m], mass-proportional damping (40)-(43), (66)."""
         return 2.0 * self.damping_ratio * self.circular_frequency * self.generalized_mass
 
-    @property
-    def midspans(self) -> tuple[float, ...]:
-        """Positions of the midspans measured from the start of the bridge [m]."""
-        return tuple((j + 0.5) * self.span for j in range(self.n_spans))
-
     def static_deflection(self, force: float) -> float:
         """The model's own midspan deflection under ``force`` at midspan [m] (90), (91).
 
         ``2 P L^3 / (pi^4 EI)`` for one span, ``P L^3 / (pi^4 EI)`` for two: in both cases
         ``P / k*``.  Positive number (magnitude of the downward deflection).
+
+        Raises
+        ------
+        NotImplementedError
+            For layouts other than one span or two equal spans.
 
         Examples
         --------
@@ -198,19 +338,37 @@ class Bridge:
     def exact_static_deflection(self, force: float) -> float:
         """Exact beam midspan deflection under ``force`` at midspan [m] (38), (64).
 
-        ``P L^3 / (48 EI)`` for one span; ``23 P L^3 / (1536 EI)`` for two equal continuous
-        spans with the load at midspan of one span.
+        ``P L^3 / (48 EI)`` for one span; ``23 P L^3 / 1536 EI`` for two equal continuous
+        spans with the load at midspan of one span.  Other layouts:
+        :func:`vbi_lib.beam_statics.continuous_statics`.
         """
+        self._study_only("exact_static_deflection")
         factor = 1.0 / 48.0 if self.n_spans == 1 else 23.0 / 1536.0
         return factor * float(force) * self.span**3 / self.EI
 
     def __repr__(self) -> str:
-        spans = "1 span" if self.n_spans == 1 else "2 spans"
+        if self.equal_spans:
+            layout = "1 span" if self.n_spans == 1 else f"{self.n_spans} spans"
+            layout += f" x {self.span:.2f} m"
+        else:
+            layout = "spans " + " + ".join(f"{length:.2f}" for length in self.spans) + " m"
         return (
-            f"Bridge({spans} x {self.span:.2f} m, f1 = {self.first_frequency_hz:.2f} Hz, "
+            f"Bridge({layout}, f1 = {self.first_frequency_hz:.2f} Hz, "
             f"EI = {self.EI:.3e} N m^2, mbar = {self.mass_per_length:.0f} kg/m, "
             f"zeta = {self.damping_ratio:.1%})"
         )
+
+
+def _span_lengths(spans: object) -> tuple[float, ...]:
+    """Span lengths as a tuple of floats, each finite and > 0."""
+    if isinstance(spans, str | bytes) or not hasattr(spans, "__len__") or len(spans) < 1:
+        raise ValueError(f"spans={spans!r} must be a list of one or more span lengths [m]")
+    return tuple(check.positive(f"spans[{j}]", length) for j, length in enumerate(spans))
+
+
+@lru_cache(maxsize=256)
+def _first_wavenumber(spans: tuple[float, ...]) -> float:
+    return float(natural_wavenumbers(spans, 1)[0])
 
 
 def mass_per_length_for(EI: float, span: float, first_frequency_hz: float) -> float:

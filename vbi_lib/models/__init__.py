@@ -7,11 +7,12 @@ and its default time step, and no model module imports another:
 
 * :mod:`~vbi_lib.models.one_coordinate`: ``"one-coordinate"``, the study's two-degree-of-
   freedom model (33)-(99), RK4;
-* :mod:`~vbi_lib.models.modal`: ``"modal"``, N exact beam modes, Newmark average
-  acceleration.
+* :mod:`~vbi_lib.models.modal`: ``"modal"``, N exact beam modes of any layout of spans,
+  Newmark average acceleration.
 
 Results are :class:`~vbi_lib.models.results.Crossing` (a subclass per model) and
-:class:`~vbi_lib.models.results.BatchResult`.
+:class:`~vbi_lib.models.results.BatchResult`; responses at sections, computed after the run
+(:mod:`~vbi_lib.models.sections`), are :class:`~vbi_lib.models.sections.SectionResponse`.
 """
 
 from .base import CrossingModel
@@ -19,6 +20,7 @@ from .driver import MODELS, simulate, simulate_many
 from .modal import Modal, ModalCrossing
 from .one_coordinate import OneCoordinate, OneCoordinateCrossing, state_matrices
 from .results import BatchResult, Crossing
+from .sections import SectionResponse
 
 __all__ = [
     "MODELS",
@@ -29,6 +31,7 @@ __all__ = [
     "ModalCrossing",
     "OneCoordinate",
     "OneCoordinateCrossing",
+    "SectionResponse",
     "simulate",
     "simulate_many",
     "state_matrices",

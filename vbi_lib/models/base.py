@@ -7,7 +7,8 @@ static deflection its DAF divides by.  Everything else is here, written once:
 * the checks of a crossing's inputs (:func:`check_crossing`);
 * the node grid (:func:`node_grid`): every profile sample, the bridge ends and the interior
   supports are nodes, so the road is a straight line within a step and the coefficients
-  switch only at nodes; gaps longer than ``speed * dt`` are subdivided evenly;
+  switch only at nodes; gaps longer than ``speed * dt`` are subdivided evenly; each step
+  knows the span it is on (any number of spans);
 * broadcasting of the batch arguments (:func:`broadcast`);
 * the refinement of the midspan peaks inside a step (:func:`downward_peak`, from the cubic
   Hermite interpolant of the displacement and its rate at the step's ends);
@@ -16,7 +17,10 @@ static deflection its DAF divides by.  Everything else is here, written once:
   assumption that the tyre never leaves the road.
 
 Every kernel fills one *summary* vector per crossing with the layout of the ``S_*``
-constants below, so the driver turns any model's output into a result the same way.
+constants below, so the driver turns any model's output into a result the same way.  The
+summary keeps the midspan peaks of the first :data:`PEAK_SLOTS` spans; the peaks of a bridge
+with more spans come from the crossing's histories (:meth:`CrossingModel.span_peaks`,
+:func:`history_peaks`), refined the same way.
 """
 
 from __future__ import annotations
@@ -43,6 +47,7 @@ P_COUNT = 7
 
 # summary vector of one crossing, filled by every kernel
 S_PEAK = 0  #: largest downward midspan deflection of span 1 (S_PEAK + 1: span 2) [m]
+PEAK_SLOTS = 2  #: spans whose peaks the summary keeps (the others: from the histories)
 S_MAX_FORCE = 2  #: largest contact force on the bridge [N]
 S_MAX_AT = 3  #: station where it occurs [m]
 S_MIN_FORCE = 4  #: smallest contact force on the bridge [N]
@@ -143,7 +148,7 @@ def node_grid(
     A gap between two of those points longer than ``speed * dt`` is cut into equal steps no
     longer than that.
     """
-    supports = bridge_start + bridge.span * np.arange(bridge.n_spans + 1)
+    supports = bridge_start + np.array(bridge.supports)
     inside = profile.x[(profile.x > profile.start) & (profile.x < stop)]
     points = np.union1d(np.concatenate(([profile.start], inside, supports)), [stop])
     points = points[points <= stop]
@@ -160,7 +165,9 @@ def node_grid(
     middle = 0.5 * (x[:-1] + x[1:]) - bridge_start
     span_of_step = np.zeros(x.size, dtype=np.int64)
     span_of_step[:-1] = np.where(
-        (middle > 0) & (middle < bridge.length), np.floor(middle / bridge.span) + 1, 0
+        (middle > 0) & (middle < bridge.length),
+        np.searchsorted(np.array(bridge.supports), middle, side="right"),
+        0,
     )
     return Grid(x, elevation, span_of_step, float((widths.max() if widths.size else 0) / speed))
 
@@ -234,9 +241,29 @@ def track_contact(summary, force, x, h):
 
 @numba.njit(cache=True)
 def track_peak(summary, span, peak):
-    """Keep the largest downward midspan deflection of ``span`` (1-based)."""
-    if peak > summary[S_PEAK + span - 1]:
+    """Keep the largest downward midspan deflection of ``span`` (1-based; spans beyond
+    :data:`PEAK_SLOTS` are left to :func:`history_peaks`)."""
+    if span <= PEAK_SLOTS and peak > summary[S_PEAK + span - 1]:
         summary[S_PEAK + span - 1] = peak
+
+
+@numba.njit(cache=True)
+def history_peaks(midspan, midspan_rate, x, speed, span_of_step, peaks):
+    """Largest downward midspan deflection of every span while the wheel is on it, from
+    histories at the nodes (``midspan``, ``midspan_rate``: ``(n_nodes, n_spans)``), refined
+    inside each step as the kernels do (:func:`downward_peak`); into ``peaks``."""
+    for j in range(peaks.shape[0]):
+        peaks[j] = -np.inf
+    for k in range(x.shape[0] - 1):
+        span = span_of_step[k]
+        if span > 0:
+            j = span - 1
+            h = (x[k + 1] - x[k]) / speed
+            peak = downward_peak(
+                midspan[k, j], midspan[k + 1, j], midspan_rate[k, j], midspan_rate[k + 1, j], h
+            )
+            if peak > peaks[j]:
+                peaks[j] = peak
 
 
 # ---------------------------------------------------------------------------- models
@@ -286,6 +313,26 @@ class CrossingModel:
     def static_deflection(self) -> float:
         """The static midspan deflection under the vehicle's weight that the DAF divides by [m]."""
         raise NotImplementedError
+
+    def span_static_deflections(self) -> np.ndarray:
+        """The static deflection each span's DAF divides by [m], ``(n_spans,)``.
+
+        By default :meth:`static_deflection` for every span; a model for layouts whose spans
+        differ gives each span its own.
+        """
+        return np.full(self.bridge.n_spans, self.static_deflection())
+
+    def span_peaks(self, summary: np.ndarray, fields: dict[str, Any], grid: Grid) -> np.ndarray:
+        """Largest downward midspan deflection of each span while the wheel is on it [m].
+
+        From the summary for up to :data:`PEAK_SLOTS` spans; a model that runs bridges with
+        more spans overrides this to take them from its histories (:func:`history_peaks`).
+        """
+        if self.bridge.n_spans > PEAK_SLOTS:
+            raise NotImplementedError(
+                f"{type(self).__name__} keeps the peaks of {PEAK_SLOTS} spans only"
+            )
+        return summary[S_PEAK : S_PEAK + self.bridge.n_spans].copy()
 
     def integrate(self, grid: Grid) -> tuple[np.ndarray, np.ndarray, dict[str, Any], str]:
         """Run one crossing over ``grid`` keeping its histories.

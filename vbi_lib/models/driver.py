@@ -17,12 +17,14 @@ from ..profiles import Profile
 from ..validity import ContactLossWarning, contact_note
 from ..vehicles import Vehicle
 from .base import (
+    PEAK_SLOTS,
     S_BRIDGE_TIME,
     S_MAX_AT,
     S_MAX_FORCE,
     S_MIN_FORCE,
     S_PEAK,
     S_TENSION_TIME,
+    SUMMARY_SIZE,
     CrossingModel,
     broadcast,
     check_crossing,
@@ -87,10 +89,12 @@ def simulate(
         Vehicle speed [m/s].
     bridge_start
         Station of the first support [m]; the bridge spans
-        ``[bridge_start, bridge_start + n_spans * span]``.
+        ``[bridge_start, bridge_start + bridge.length]``.
     model
         A key of :data:`MODELS`: ``"one-coordinate"`` (default), the study's model (33)-(99),
-        RK4; ``"modal"``, the first ``modes`` exact beam modes, Newmark average acceleration.
+        RK4, one span or two equal spans; ``"modal"``, the first ``modes`` exact beam modes
+        of any layout of spans (:meth:`~vbi_lib.Bridge.continuous`), Newmark average
+        acceleration.
     modes
         Number of beam modes, for ``model="modal"`` only.
     coupled
@@ -107,7 +111,9 @@ def simulate(
     Returns
     -------
     Crossing
-        The model's subclass of :class:`~vbi_lib.models.results.Crossing`.
+        The model's subclass of :class:`~vbi_lib.models.results.Crossing`; its
+        ``moment_at``, ``shear_at``, ``displacement_at`` and ``sections`` give the responses
+        at any section.
 
     Raises
     ------
@@ -166,7 +172,7 @@ def simulate(
         position=grid.x,
         contact_force=contact,
         span_of_step=grid.span_of_step,
-        daf=summary[S_PEAK : S_PEAK + bridge.n_spans] / static,
+        daf=setup.span_peaks(summary, fields, grid) / setup.span_static_deflections(),
         static_deflection=static,
         dt=grid.dt_max,
         coupled=coupled,
@@ -195,11 +201,14 @@ def simulate_many(
 
     Every argument but ``model`` and ``dt`` is one value or a list; lists must share one
     length ``n`` and single values are repeated.  Results equal :func:`simulate` crossing by
-    crossing (no histories are kept).
+    crossing (no histories are kept).  Bridges of up to two spans run in parallel in the
+    compiled batch kernel; a bridge of three or more spans (``model="modal"``) runs one
+    crossing at a time, its span peaks taken from the histories.
 
     Returns
     -------
     BatchResult
+        ``daf`` has ``max(2, n_spans)`` columns (NaN beyond a crossing's spans).
 
     Warns
     -----
@@ -251,15 +260,29 @@ def simulate_many(
         except (TypeError, ValueError) as exc:
             raise type(exc)(f"crossing {i}: {exc}") from None
         step = setup.default_time_step()[0] if dt is None else dt
-        key = (id(profile), bridge.span, bridge.n_spans, speed, start, step)
+        key = (id(profile), bridge.supports, speed, start, step)
         if key not in cache:
             cache[key] = node_grid(bridge, profile, speed, start, step, start + bridge.length)
         setups.append(setup)
         grids.append(cache[key])
-    summaries = kind.integrate_many(setups, grids)
+    wide = [i for i, s in enumerate(setups) if s.bridge.n_spans > PEAK_SLOTS]
+    narrow = sorted(set(range(n)) - set(wide))
+    peaks = np.full((n, max(PEAK_SLOTS, *(s.bridge.n_spans for s in setups))), np.nan)
+    summaries = np.full((n, SUMMARY_SIZE), np.nan)
+    if narrow:
+        summaries[narrow] = kind.integrate_many([setups[i] for i in narrow],
+                                                [grids[i] for i in narrow])  # fmt: skip
+        peaks[narrow, :PEAK_SLOTS] = summaries[narrow, S_PEAK : S_PEAK + PEAK_SLOTS]
+    for i in wide:  # more spans than the summary holds: one crossing with its histories
+        summary, _, fields, _ = setups[i].integrate(grids[i])
+        summaries[i] = summary
+        peaks[i, : setups[i].bridge.n_spans] = setups[i].span_peaks(summary, fields, grids[i])
     weights = np.array([s.vehicle.weight for s in setups])
-    statics = np.array([s.static_deflection() for s in setups])
-    daf = summaries[:, S_PEAK : S_PEAK + 2] / statics[:, None]
+    statics = np.full(peaks.shape, np.nan)
+    for i, s in enumerate(setups):
+        statics[i, : s.bridge.n_spans] = s.span_static_deflections()
+    daf = peaks / statics
+
     min_ratio, tension = _contact(summaries, weights)
     lost = int((min_ratio < 0).sum())
     if lost:

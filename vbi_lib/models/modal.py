@@ -34,7 +34,12 @@ Static deflection and DAF
 The model's static deflection is the largest static midspan deflection under the weight over
 all load positions, from the same N modes (the crawl run of a finite-element study;
 :func:`vbi_lib.beam_modes.largest_static_deflection`), and the DAF of span ``j`` divides the
-largest downward midspan deflection while the wheel is on span ``j`` by it.
+largest downward midspan deflection while the wheel is on span ``j`` by it.  On other layouts
+than one span or two equal spans, the spans differ in stiffness and each span's DAF divides
+by its own largest static midspan deflection (``Crossing.static_deflection`` is then the
+largest of them).  Moments, shears and displacements at any section, each with its own
+static counterpart, come from :meth:`~vbi_lib.models.results.Crossing.sections`.
+
 """
 
 from __future__ import annotations
@@ -52,14 +57,15 @@ from .base import (
     P_DAMPING,
     P_GRAVITY,
     P_MASS,
-    P_SPAN,
     P_SPEED,
     P_START,
     P_STIFFNESS,
+    PEAK_SLOTS,
     SUMMARY_SIZE,
     CrossingModel,
     Grid,
     downward_peak,
+    history_peaks,
     parameters,
     start_summary,
     track_contact,
@@ -94,9 +100,9 @@ def _kernel(
     elevation,
     span_of_step,
     params,
-    kind,
+    supports,
     kappa,
-    amp,
+    coef,
     omega,
     zeta,
     phi_mid,
@@ -110,7 +116,8 @@ def _kernel(
 ):
     """Newmark average acceleration on the vehicle and N modes over the nodes ``x``.
 
-    ``span_of_step[k]``: 0 off the bridge, else the span (1 or 2) of step k.  History
+    ``span_of_step[k]``: 0 off the bridge, else the span (1, 2, ...) of step k; the modes
+    are evaluated from ``supports``, ``kappa`` and ``coef`` (:func:`shape_values`).  History
     arrays are filled when they have one row per node; ``summary`` gets the peaks and the
     contact checks (layout of :mod:`vbi_lib.models.base`).
     """
@@ -124,7 +131,6 @@ def _kernel(
     weight = m_v * params[P_GRAVITY]
     speed = params[P_SPEED]
     start = params[P_START]
-    span = params[P_SPAN]
     eps = 1.0 if convective else 0.0
     cpl = 1.0 if coupled else 0.0
 
@@ -164,7 +170,7 @@ def _kernel(
         gamma = 0.5 * h
         # ---- accelerations at the start of the step (right limit), from the equations
         if on:
-            shape_values(xa - start, kind, kappa, amp, span, phi, dphi, ddphi)
+            shape_values(xa - start, supports, kappa, coef, phi, dphi, ddphi)
         else:
             for n in range(n_modes):
                 phi[n] = 0.0
@@ -199,7 +205,7 @@ def _kernel(
         vvt = vv + gamma * av
         # ---- the implicit equations at the end of the step reduce to one for F
         if on:
-            shape_values(xb - start, kind, kappa, amp, span, phi, dphi, ddphi)
+            shape_values(xb - start, supports, kappa, coef, phi, dphi, ddphi)
         s_v = k_v * beta + c_v * gamma
         ub = 0.0
         ubd = 0.0
@@ -245,8 +251,8 @@ def _kernel(
 
 @numba.njit(cache=True, parallel=True)
 def _batch_kernel(
-    offsets, x, elevation, span_of_step, params, mode_offsets, kind, kappa, amp, omega, zeta,
-    phi_mid, n_spans, coupled, convective, summaries,
+    offsets, x, elevation, span_of_step, params, mode_offsets, supports, kappa, coef, omega,
+    zeta, phi_mid, n_spans, coupled, convective, summaries,
 ):  # fmt: skip
     """Run many crossings in parallel; crossing i uses nodes ``offsets[i]:offsets[i+1]``."""
     n_jobs = offsets.shape[0] - 1
@@ -261,9 +267,9 @@ def _batch_kernel(
             elevation[a:b],
             span_of_step[a:b],
             params[i],
-            kind[ma:mb],
+            np.ascontiguousarray(supports[i, : n_spans[i] + 1]),
             kappa[ma:mb],
-            amp[ma:mb],
+            np.ascontiguousarray(coef[ma:mb, : n_spans[i]]),
             omega[ma:mb],
             zeta[ma:mb],
             np.ascontiguousarray(phi_mid[i, : n_spans[i], : mb - ma]),
@@ -299,25 +305,9 @@ class ModalCrossing(Crossing):
         """Natural frequencies of the N modes [Hz]."""
         return self.modes.frequencies_hz
 
-    def displacement_at(self, x_from_bridge_start: float | np.ndarray) -> np.ndarray:
-        """Deflection history ``sum_n phi_n(x) q_n(t)`` [m] at stations from the bridge start.
-
-        Returns shape ``(n_time,)`` for one station, ``(n_time, n_x)`` for several.
-        """
-        values = self.modal_coordinates @ self.modes.shape(x_from_bridge_start).T
-        return values[:, 0] if np.ndim(x_from_bridge_start) == 0 else values
-
-    def moment_at(self, x_from_bridge_start: float | np.ndarray) -> np.ndarray:
-        """Bending moment ``EI sum_n phi_n''(x) q_n(t)`` [N m], sagging positive.
-
-        From the curvature of the modes; it converges more slowly in N than the deflection
-        (mode n contributes in proportion to ``1/n^2`` rather than ``1/n^4``).
-        Returns shape ``(n_time,)`` for one station, ``(n_time, n_x)`` for several.
-        """
-        values = self.bridge.EI * (
-            self.modal_coordinates @ self.modes.curvature(x_from_bridge_start).T
-        )
-        return values[:, 0] if np.ndim(x_from_bridge_start) == 0 else values
+    def modal_history(self) -> tuple[BeamModes, np.ndarray]:
+        """The modes and their coordinates ``q_n(t)``, for the section responses."""
+        return self.modes, self.modal_coordinates
 
 
 def check_modes(modes: object) -> int:
@@ -333,7 +323,7 @@ class Modal(CrossingModel):
     """The sprung mass on the bridge's first N exact beam modes; Newmark average acceleration."""
 
     name = "modal"
-    description = "N exact Euler-Bernoulli modes (1 or 2 spans); Newmark average acceleration"
+    description = "N exact Euler-Bernoulli modes (any spans); Newmark average acceleration"
     result_type = ModalCrossing
 
     def __init__(self, bridge, vehicle, speed, bridge_start, *, coupled, convective, modes):  # noqa: ANN001
@@ -351,6 +341,20 @@ class Modal(CrossingModel):
     def static_deflection(self) -> float:
         return max(largest_static_deflection(self.bridge, self.count)) * self.vehicle.weight
 
+    def span_static_deflections(self) -> np.ndarray:
+        each = np.array(largest_static_deflection(self.bridge, self.count)) * self.vehicle.weight
+        if self.bridge.study_layout:  # the spans are alike: one value, as the study's model
+            return np.full(each.size, each.max())
+        return each
+
+    def span_peaks(self, summary, fields, grid):  # noqa: ANN001, ANN201
+        if self.bridge.n_spans <= PEAK_SLOTS:
+            return super().span_peaks(summary, fields, grid)
+        peaks = np.empty(self.bridge.n_spans)
+        history_peaks(fields["midspan_displacement"], fields["modal_velocities"] @ self.phi_mid.T,
+                      grid.x, self.speed, grid.span_of_step, peaks)  # fmt: skip
+        return peaks
+
     def _zeta(self) -> np.ndarray:
         return np.full(self.count, self.bridge.damping_ratio)
 
@@ -362,9 +366,9 @@ class Modal(CrossingModel):
         contact = np.empty(n)
         summary = np.empty(SUMMARY_SIZE)
         b = self.basis
-        _kernel(grid.x, grid.elevation, grid.span_of_step, self.params, b.kind, b.wavenumber,
-                b.amplitude, b.omega, self._zeta(), self.phi_mid, self.coupled, self.convective,
-                q, qd, veh, contact, summary)  # fmt: skip
+        _kernel(grid.x, grid.elevation, grid.span_of_step, self.params, b.supports, b.wavenumber,
+                b.coefficients, b.omega, self._zeta(), self.phi_mid, self.coupled,
+                self.convective, q, qd, veh, contact, summary)  # fmt: skip
         fields = {
             "modes": b,
             "vehicle_displacement": veh[:, 0],
@@ -382,9 +386,16 @@ class Modal(CrossingModel):
         counts = [m.count for m in models]
         offsets = np.zeros(n + 1, dtype=np.int64)
         offsets[1:] = np.cumsum([g.x.size for g in grids])
-        phi_mid = np.full((n, 2, max(counts)), np.nan)
+        most = max(m.bridge.n_spans for m in models)
+        phi_mid = np.full((n, max(2, most), max(counts)), np.nan)
+        supports = np.full((n, most + 1), np.nan)
+        coef = np.zeros((sum(counts), most, 4))
+        first = 0
         for i, m in enumerate(models):
             phi_mid[i, : m.bridge.n_spans, : m.count] = m.phi_mid
+            supports[i, : m.bridge.n_spans + 1] = m.basis.supports
+            coef[first : first + m.count, : m.bridge.n_spans] = m.basis.coefficients
+            first += m.count
         summaries = np.full((n, SUMMARY_SIZE), np.nan)
         _batch_kernel(
             offsets,
@@ -393,9 +404,9 @@ class Modal(CrossingModel):
             np.concatenate([g.span_of_step for g in grids]),
             np.array([m.params for m in models]),
             np.concatenate(([0], np.cumsum(counts))).astype(np.int64),
-            np.concatenate([m.basis.kind for m in models]),
+            supports,
             np.concatenate([m.basis.wavenumber for m in models]),
-            np.concatenate([m.basis.amplitude for m in models]),
+            coef,
             np.concatenate([m.basis.omega for m in models]),
             np.concatenate([m._zeta() for m in models]),
             phi_mid,

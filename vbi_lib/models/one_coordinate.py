@@ -40,6 +40,7 @@ from dataclasses import dataclass
 import numba
 import numpy as np
 
+from ..beam_modes import BeamModes, beam_modes
 from ..bridges import Bridge
 from ..vehicles import Vehicle
 from .base import (
@@ -334,6 +335,16 @@ class OneCoordinateCrossing(Crossing):
     bridge_coordinate: np.ndarray
     bridge_velocity: np.ndarray
 
+    def modal_history(self) -> tuple[BeamModes, np.ndarray]:
+        """The one shape as the first mode, ``phi_1 = psi / sqrt(m*)``, ``q = sqrt(m*) z_b``.
+
+        ``psi = sin(pi x / L)`` is the first mode of one span and of two equal spans, and
+        ``m*``, ``k*`` are its generalised mass and stiffness, so the section responses
+        (:mod:`vbi_lib.models.sections`) are the exact statics plus this mode's dynamics.
+        """
+        scale = math.sqrt(self.bridge.generalized_mass)
+        return beam_modes(self.bridge, 1), self.bridge_coordinate[:, None] * scale
+
 
 class OneCoordinate(CrossingModel):
     """The study's model: one sprung mass on the one-coordinate beam, RK4 (33)-(99)."""
@@ -343,6 +354,12 @@ class OneCoordinate(CrossingModel):
     result_type = OneCoordinateCrossing
 
     def __init__(self, bridge, vehicle, speed, bridge_start, *, coupled, convective, modes):  # noqa: ANN001
+        if not bridge.study_layout:
+            raise ValueError(
+                f"the one-coordinate model bends one span or two equal spans in the study's "
+                f"shape sin(pi x / L); this bridge has spans {bridge.spans} m.  Use "
+                "model='modal', modes=N (exact modes of any layout)"
+            )
         if modes is not None:
             raise ValueError(
                 f"modes={modes!r} applies to model='modal'; the one-coordinate model bends the "

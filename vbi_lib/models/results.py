@@ -9,6 +9,12 @@ coordinates of the many-mode model).  :class:`BatchResult` is what
 Displacements are positive up (a deflection under load is negative); the DAF divides the
 largest *downward* midspan deflection by the model's static deflection (88)-(91).  Plots and
 tables use the display units of :mod:`vbi_lib.display`.
+
+Every crossing also gives the displacement, bending moment and shear at any section
+(:meth:`Crossing.displacement_at`, :meth:`Crossing.moment_at`, :meth:`Crossing.shear_at`)
+and their extremes, static counterparts and DAFs (:meth:`Crossing.sections`), computed after
+the run from the modal coordinates by the mode-acceleration method
+(:mod:`vbi_lib.models.sections`).
 """
 
 from __future__ import annotations
@@ -19,8 +25,10 @@ import numpy as np
 import pandas as pd
 
 from .. import display
+from ..beam_modes import BeamModes
 from ..bridges import Bridge
 from ..vehicles import Vehicle
+from .sections import SectionResponse, check_method, section_history, static_counterpart
 
 __all__ = ["BatchResult", "Crossing"]
 
@@ -29,6 +37,18 @@ _KINDS = ("displacement", "deflection", "contact", "vehicle")
 
 def _spans(n: int) -> str:
     return "1 span" if n == 1 else f"{n} spans"
+
+
+def _stations(x: object) -> np.ndarray:
+    """Stations from the bridge start as a 1-D float array of at least one (range checked
+    where the modes are evaluated)."""
+    try:
+        sections = np.atleast_1d(np.asarray(x, dtype=float)).ravel()
+    except (TypeError, ValueError):
+        raise ValueError(f"x={x!r} must be stations [m] from the bridge start") from None
+    if sections.size == 0:
+        raise ValueError(f"x={x!r} must give one or more stations [m] from the bridge start")
+    return sections
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
@@ -57,9 +77,12 @@ class Crossing:
         Per node: 0 while the wheel is off the bridge, else the span of the step from the node.
     daf
         Per span, the largest downward midspan deflection while the wheel is on that span over
-        the model's static deflection (88)-(91).
+        the model's static deflection (88)-(91) (on layouts other than one span or two equal
+        spans, over that span's own largest static midspan deflection).
     static_deflection
-        The static deflection the DAF divides by [m].
+        The static deflection the DAF divides by [m] (the largest of the spans' when they
+        differ).
+
     dt
         Largest time step used [s].
     coupled, convective
@@ -115,6 +138,112 @@ class Crossing:
     def lost_contact(self) -> bool:
         """Whether the contact force became tensile on the bridge (outside validity)."""
         return bool(self.min_contact_force_ratio < 0.0)
+
+    # ------------------------------------------------------------------ sections
+    def modal_history(self) -> tuple[BeamModes, np.ndarray]:
+        """The bridge's modes and their coordinates ``(n_time, N)``; supplied by each model."""
+        raise NotImplementedError(f"{self.model!r} crossings do not give section responses")
+
+    def _axles(self) -> tuple[np.ndarray, np.ndarray]:
+        """Downward loads on the bridge [N] and stations from its start [m], ``(n_time, 1)``."""
+        loads = np.where(self.on_bridge, self.contact_force, 0.0)
+        return loads[:, None], (self.position - self.bridge_start)[:, None]
+
+    def _section(self, x: float | np.ndarray, effect: str, method: str) -> np.ndarray:
+        sections = _stations(x)
+        modes, q = self.modal_history()
+        loads, positions = self._axles()
+        values = section_history(modes, q, loads, positions, sections, effect, method)
+        return values[:, 0] if np.ndim(x) == 0 else values
+
+    def displacement_at(
+        self, x: float | np.ndarray, method: str = "mode-acceleration"
+    ) -> np.ndarray:
+        """Displacement history [m] (positive up) at stations ``x`` from the bridge start.
+
+        ``method``: ``"mode-acceleration"`` (default: exact statics plus the modes'
+        dynamics) or ``"mode-displacement"`` (the plain modal series
+        ``sum_n phi_n(x) q_n(t)``); see :mod:`vbi_lib.models.sections`.
+
+        Returns shape ``(n_time,)`` for one station, ``(n_time, n_x)`` for several.
+
+        Raises
+        ------
+        ValueError
+            A station off the bridge, an unknown method.
+        """
+        return self._section(x, "displacement", method)
+
+    def moment_at(self, x: float | np.ndarray, method: str = "mode-acceleration") -> np.ndarray:
+        """Bending moment history [N m] (sagging positive) at stations ``x`` from the start.
+
+        By the mode-acceleration method by default, which is accurate with a few modes; the
+        ``"mode-displacement"`` series ``EI sum_n phi_n''(x) q_n(t)`` converges slowly (terms
+        fall as ``1/n^2``).  Shapes and errors as :meth:`displacement_at`.
+        """
+        return self._section(x, "moment", method)
+
+    def shear_at(self, x: float | np.ndarray, method: str = "mode-acceleration") -> np.ndarray:
+        """Shear history [N] (``V = dM/dx``) at stations ``x`` from the bridge start.
+
+        At a station holding the axle or an interior support, the value just to its left.
+        By the mode-acceleration method by default; the mode-displacement series
+        (third derivatives of the modes) does not converge under a concentrated load.
+        Shapes and errors as :meth:`displacement_at`.
+        """
+        return self._section(x, "shear", method)
+
+    def sections(self, x: float | np.ndarray, method: str = "mode-acceleration") -> SectionResponse:
+        """Displacement, moment and shear at sections, their extremes and DAFs.
+
+        Each effect's static counterpart is its extreme when the vehicle's weight crawls
+        across (:func:`vbi_lib.beam_statics.static_envelope`), so each section and effect
+        has its own DAF; the result also gives where and when each extreme occurs and the
+        other effects at that instant.
+
+        Parameters
+        ----------
+        x
+            Stations from the bridge start [m].
+        method
+            ``"mode-acceleration"`` (default) or ``"mode-displacement"``.
+
+        Returns
+        -------
+        SectionResponse
+
+        Raises
+        ------
+        ValueError
+            A station off the bridge, an unknown method.
+        """
+        method = check_method(method)
+        sections = _stations(x)
+        modes, _ = self.modal_history()
+        static = static_counterpart(
+            modes, sections, np.array([self.vehicle.weight]), np.zeros(1), method
+        )
+        plural = "s" if modes.count > 1 else ""
+        notes = [
+            f"section responses by the {method} method with {modes.count} mode{plural}; "
+            f"extremes at the nodes (steps up to {np.diff(self.position).max():.3g} m)"
+        ]
+        if self.lost_contact:
+            notes += [n for n in self.notes if "contact" in n.lower()]
+        return SectionResponse(
+            bridge=self.bridge,
+            sections=sections,
+            time=self.time,
+            position=self.position - self.bridge_start,
+            displacement=self._section(sections, "displacement", method),
+            moment=self._section(sections, "moment", method),
+            shear=self._section(sections, "shear", method),
+            static=static,
+            method=method,
+            modes=modes.count,
+            lost_contact=self.lost_contact,
+            notes=tuple(notes),
+        )
 
     # ------------------------------------------------------------------ export
     def to_dataframe(self) -> pd.DataFrame:
@@ -217,7 +346,8 @@ class BatchResult:
     speed
         Vehicle speed of each crossing [m/s], shape ``(n,)``.
     daf
-        ``(n, 2)`` DAF of each span (NaN in the second column for one-span bridges).
+        ``(n, max(2, n_spans))`` DAF of each span (NaN beyond a crossing's spans, e.g. the
+        second column for one-span bridges).
     contact_force_amplification
         Largest contact force on the bridge over the weight, ``(n,)``.
     peak_contact_position
@@ -253,8 +383,7 @@ class BatchResult:
         return pd.DataFrame(
             {
                 display.label("speed", "speed"): display.value(self.speed, "speed"),
-                "daf span 1": self.daf[:, 0],
-                "daf span 2": self.daf[:, 1],
+                **{f"daf span {j + 1}": self.daf[:, j] for j in range(self.daf.shape[1])},
                 "contact force amplification": self.contact_force_amplification,
                 "min contact force ratio": self.min_contact_force_ratio,
                 "tension fraction": self.tension_fraction,
@@ -278,7 +407,7 @@ class BatchResult:
         v = display.value(self.speed[order], "speed")
         lost = self.lost_contact[order]
         if kind == "daf":
-            for j in range(2):
+            for j in range(self.daf.shape[1]):
                 y = self.daf[order, j]
                 if np.isnan(y).all():
                     continue

@@ -12,8 +12,10 @@ contact force stayed compressive (the model's validity).
 
 The package is split by job: :mod:`~vbi_lib.studies.recipes` (roads a worker builds),
 :mod:`~vbi_lib.studies.scenarios` (tables: grids, Monte Carlo draws, validation),
-:mod:`~vbi_lib.studies.runner` (the runner and its executors, saving) and
-:mod:`~vbi_lib.studies.statistics` (characteristic values, agreement with a reference).
+:mod:`~vbi_lib.studies.runner` (the runner and its executors, saving),
+:mod:`~vbi_lib.studies.statistics` (characteristic values, agreement with a reference) and
+:mod:`~vbi_lib.studies.envelopes` (responses at sections: their columns and envelopes,
+``run(..., sections=[...])`` and :func:`envelope`).
 
 How it runs
 -----------
@@ -32,6 +34,7 @@ station, so the approach length stays ``bridge_start - profile.start`` while the
 the bridge move back by ``d`` (the study's Figure 2.15.16 slides the road in 5 ft steps).
 """
 
+from .envelopes import envelope
 from .recipes import FlatProfile, HarmonicProfile, ISOProfile
 from .runner import (
     DEFAULT_CHUNK_SIZE,
@@ -66,6 +69,7 @@ __all__ = [
     "agreement",
     "characteristic_values",
     "default_executor",
+    "envelope",
     "grid",
     "load",
     "monte_carlo",

@@ -28,6 +28,7 @@ from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
 from ..validity import ContactLossWarning
+from .envelopes import SECTION_FIELDS, check_sections, section_columns
 from .recipes import extent, profile_label
 from .scenarios import TAG_PREFIX, _rows, validate
 
@@ -60,14 +61,23 @@ def _road(profile: Profile, offset: float) -> Profile:
     return profile.segment(profile.start + offset, profile.end).shifted(-offset)
 
 
-def _iri_of_spans(road: Profile, bridge: Bridge, start: float) -> np.ndarray:
-    """IRI [m/km] of the road over each span (the golden car starts on the bridge)."""
+def _iri_of_spans(road: Profile, bridge: Bridge, start: float, width: int) -> np.ndarray:
+    """IRI [m/km] of the road over each span (the golden car starts on the bridge).
+
+    Equal spans: one run over the deck in segments of a span; unequal spans: one run per
+    span (the car starts afresh on each).
+    """
     from ..roughness import iri  # imported only when a study asks for IRI
 
-    out = np.full(2, np.nan)
-    deck = road.segment(start, start + bridge.length)
-    values = iri(deck, segment_length=bridge.span).segment_iri
-    out[: bridge.n_spans] = np.asarray(values, dtype=float)[: bridge.n_spans]
+    out = np.full(width, np.nan)
+    if bridge.equal_spans:
+        deck = road.segment(start, start + bridge.length)
+        values = iri(deck, segment_length=bridge.span).segment_iri
+        out[: bridge.n_spans] = np.asarray(values, dtype=float)[: bridge.n_spans]
+    else:
+        supports = start + np.array(bridge.supports)
+        for j in range(bridge.n_spans):
+            out[j] = iri(road.segment(supports[j], supports[j + 1])).iri
     return out
 
 
@@ -78,6 +88,38 @@ _SUMMARIES = (
     "tension_fraction",
     "dt",
 )
+
+
+def _run_sections(payload: dict[str, Any], road: list[Profile], out: dict[str, Any]) -> None:
+    """Crossings one at a time with their histories, for the responses at the sections."""
+    from ..models import simulate
+
+    sections = payload["sections"]
+    for i in range(payload["speed"].size):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ContactLossWarning)
+            crossing = simulate(
+                payload["bridges"][payload["b"][i]],
+                payload["vehicles"][payload["v"][i]],
+                road[i],
+                payload["speed"][i],
+                payload["start"][i],
+                model=payload["model"][i],
+                modes=int(payload["modes"][i]) if payload["model"][i] == "modal" else None,
+                coupled=bool(payload["coupled"][i]),
+                convective=bool(payload["convective"][i]),
+                dt=payload["dt"],
+            )
+        out["daf"][i, : crossing.daf.size] = crossing.daf
+        out["contact_force_amplification"][i] = crossing.contact_force_amplification
+        on = np.flatnonzero(crossing.on_bridge)
+        peak = on[np.argmax(crossing.contact_force[on])]
+        out["peak_contact_position"][i] = crossing.position[peak]
+        out["min_contact_force_ratio"][i] = crossing.min_contact_force_ratio
+        out["tension_fraction"][i] = crossing.tension_fraction
+        out["dt"][i] = crossing.dt
+        for name, values in section_columns(crossing.sections(sections)).items():
+            out[name][i] = values
 
 
 def _run_chunk(payload: dict[str, Any]) -> dict[str, np.ndarray]:
@@ -98,8 +140,16 @@ def _run_chunk(payload: dict[str, Any]) -> dict[str, np.ndarray]:
         if key not in roads:
             roads[key] = _road(profiles[key[0]], key[1])
     road = [roads[(int(p[i]), float(offset[i]))] for i in range(n)]
-    out = {"daf": np.full((n, 2), np.nan)} | {name: np.full(n, np.nan) for name in _SUMMARIES}
-    for name in dict.fromkeys(model):
+    out = {"daf": np.full((n, payload["width"]), np.nan)}
+    out |= {name: np.full(n, np.nan) for name in _SUMMARIES}
+    if payload["sections"] is not None:
+        count = payload["sections"].size
+        out |= {name: np.full((n, count), np.nan) for name in SECTION_FIELDS}
+        _run_sections(payload, road, out)
+        names: dict = {}  # every crossing is done
+    else:
+        names = dict.fromkeys(model)
+    for name in names:
         rows = np.flatnonzero(model == name)
         with warnings.catch_warnings():
             # the table's columns say which crossings lost contact; run() warns once
@@ -116,16 +166,16 @@ def _run_chunk(payload: dict[str, Any]) -> dict[str, np.ndarray]:
                 convective=list(convective[rows]),
                 dt=payload["dt"],
             )
-        out["daf"][rows] = result.daf
+        out["daf"][rows, : result.daf.shape[1]] = result.daf
         for column in _SUMMARIES:
             out[column][rows] = getattr(result, column)
     if payload["iri"]:
-        out["iri"] = np.empty((n, 2))
+        out["iri"] = np.empty((n, payload["width"]))
         done: dict[tuple[int, int, float], np.ndarray] = {}
         for i in range(n):
             key = (id(road[i]), int(b[i]), float(start[i]))
             if key not in done:
-                done[key] = _iri_of_spans(road[i], bridges[b[i]], start[i])
+                done[key] = _iri_of_spans(road[i], bridges[b[i]], start[i], payload["width"])
             out["iri"][i] = done[key]
     return out
 
@@ -181,7 +231,12 @@ def _labels(objects: Sequence[Any], kind: str) -> list[str]:
     out = []
     for obj in objects:
         if kind == "bridge":
-            out.append(f"{obj.n_spans} x {obj.span:g} m, {obj.first_frequency_hz:.2f} Hz")
+            layout = (
+                f"{obj.n_spans} x {obj.span:g} m"
+                if obj.equal_spans
+                else " + ".join(f"{s:g}" for s in obj.spans) + " m"
+            )
+            out.append(f"{layout}, {obj.first_frequency_hz:.2f} Hz")
         elif kind == "vehicle":
             out.append(f"{obj.mass:.0f} kg, {obj.frequency_hz:.2f} Hz")
         else:
@@ -220,6 +275,7 @@ def run(
     iri: bool = False,
     dt: float | None = None,
     threads_per_task: int | None = 1,
+    sections: Sequence[float] | np.ndarray | None = None,
 ) -> pd.DataFrame:
     """Simulate every scenario and return one tidy row per crossing.
 
@@ -242,12 +298,18 @@ def run(
     progress
         ``True`` always shows a tqdm bar, ``False`` never, ``None`` once a run passes 1 s.
     iri
-        Also compute the IRI of the road over each span (``iri_1``, ``iri_2`` [m/km]).
+        Also compute the IRI of the road over each span (``iri_1``, ``iri_2``, ... [m/km]).
     dt
         Largest time step [s]; ``None`` lets each crossing pick ``0.1 / omega_max``.
     threads_per_task
         numba threads a task may use inside a worker of a user-given executor (the default
         pool always uses one; ``"serial"`` uses numba's default).
+    sections
+        Stations from the bridge start [m] (on every bridge of the table) where the
+        displacement, moment and shear are followed: each crossing then runs with its
+        histories (:func:`vbi_lib.simulate`, slower than the batch kernel) and the table
+        gains the columns of :mod:`vbi_lib.studies.envelopes` (``moment_max_1``,
+        ``moment_daf_1``, ...); :func:`~vbi_lib.studies.envelope` takes their envelope.
 
     Returns
     -------
@@ -259,7 +321,8 @@ def run(
         ``vehicle_f_hz``, ``vehicle_damping_ratio``, ``profile_*`` (the recipe's fields),
         ``speed`` [m/s], ``bridge_start``, ``profile_offset`` [m], ``coupled``,
         ``convective``, ``model``, ``modes`` and any ``tag_*`` columns; results: ``daf_1``,
-        ``daf_2`` (NaN for one span), ``daf`` (the larger), ``contact_force_amplification``,
+        ``daf_2``, ... (one per span of the longest layout, at least two; NaN beyond a
+        bridge's spans), ``daf`` (the largest), ``contact_force_amplification``,
         ``peak_contact_position`` [m] and ``peak_contact_time`` [s from the start] of the
         largest contact force on the bridge; the contact checks
         ``min_contact_force_ratio``, ``tension_fraction`` and ``lost_contact`` (a crossing
@@ -302,6 +365,8 @@ def run(
         dt = check.positive("dt", dt)
 
     b_code, bridges = pd.factorize(table["bridge"])
+    sections = check_sections(sections, list(bridges), table.index, b_code)
+    width = max(2, *(b.n_spans for b in bridges))
     v_code, vehicles = pd.factorize(table["vehicle"])
     p_code, profiles = pd.factorize(table["profile"])
     arrays = {
@@ -332,11 +397,17 @@ def run(
             "dt": dt,
             "iri": bool(iri),
             "threads": threads,
+            "sections": sections,
+            "width": width,
         }
 
-    daf = np.full((n, 2), np.nan)
+    daf = np.full((n, width), np.nan)
     summaries = {name: np.full(n, np.nan) for name in _SUMMARIES}
-    iri_values = np.full((n, 2), np.nan)
+    iri_values = np.full((n, width), np.nan)
+    per_section = {
+        name: np.full((n, 0 if sections is None else sections.size), np.nan)
+        for name in SECTION_FIELDS
+    }
     from tqdm import tqdm
 
     bar = tqdm(
@@ -376,6 +447,9 @@ def run(
                 daf[rows] = result["daf"]
                 for name in _SUMMARIES:
                     summaries[name][rows] = result[name]
+                if sections is not None:
+                    for name in SECTION_FIELDS:
+                        per_section[name][rows] = result[name]
                 if iri:
                     iri_values[rows] = result["iri"]
                 bar.update(rows.size)
@@ -436,9 +510,9 @@ def run(
     for column in table.columns:
         if str(column).startswith(TAG_PREFIX):
             out[column] = table[column].to_numpy()
-    out["daf_1"] = daf[:, 0]
-    out["daf_2"] = daf[:, 1]
-    out["daf"] = np.fmax(daf[:, 0], daf[:, 1])
+    for j in range(width):
+        out[f"daf_{j + 1}"] = daf[:, j]
+    out["daf"] = np.fmax.reduce(daf, axis=1)
     out["contact_force_amplification"] = summaries["contact_force_amplification"]
     out["peak_contact_position"] = where = summaries["peak_contact_position"]
     starts = np.array([extent(p)[0] for p in profiles])[p_code]
@@ -456,8 +530,13 @@ def run(
             stacklevel=2,
         )
     if iri:
-        out["iri_1"] = iri_values[:, 0]
-        out["iri_2"] = iri_values[:, 1]
+        for j in range(width):
+            out[f"iri_{j + 1}"] = iri_values[:, j]
+    if sections is not None:
+        for k, station in enumerate(sections):
+            out[f"section_{k + 1}"] = np.full(n, station)
+            for name in SECTION_FIELDS:
+                out[f"{name}_{k + 1}"] = per_section[name][:, k]
     return pd.DataFrame(out, index=table.index.copy())
 
 
