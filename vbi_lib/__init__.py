@@ -22,7 +22,6 @@ from . import (
     study_data,
     units,
 )
-from .beam_modes import BeamModes, beam_modes
 from .bridges import Bridge, reference_beam, shape_function_error
 from .models import (
     MODELS,
@@ -34,6 +33,7 @@ from .models import (
     simulate_many,
     state_matrices,
 )
+from .modes import BeamModes, beam_modes
 from .profile_files import ErdFile, ProfileFileError, read_erd, read_profile
 from .profiles import Profile, iso8608_class, max_sample_spacing
 from .roughness import fit_iso8608, iri, profile_spectrum

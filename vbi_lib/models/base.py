@@ -277,7 +277,7 @@ class CrossingModel:
     Attributes
     ----------
     name
-        The key of the model in :data:`vbi_lib.models.MODELS`.
+        The key of the model in :data:`vbi_lib.models.driver.MODELS`.
     description
         One line for listings: the bridge model and the integrator.
     result_type

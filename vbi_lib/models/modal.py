@@ -2,7 +2,7 @@ r"""A many-mode reference model: the truck on the bridge's first N exact Euler-B
 
 The study's model (:mod:`vbi_lib.models.one_coordinate`) bends the beam in one assumed
 shape.  Here the beam deflects in its first ``N`` exact free-vibration modes
-(:func:`vbi_lib.beam_modes`), :math:`u_b(x, t) = \sum_n \phi_n(x)\, q_n(t)`, each with its own
+(:func:`vbi_lib.modes`), :math:`u_b(x, t) = \sum_n \phi_n(x)\, q_n(t)`, each with its own
 frequency :math:`\omega_n` and the bridge's damping ratio :math:`\zeta_b` (modal damping, as in
 a modal finite-element analysis).  The sprung mass couples to the modes exactly as to the one
 coordinate of the study's model (:math:`\psi z_b` becomes :math:`\sum \phi_n q_n`):
@@ -33,7 +33,7 @@ Static deflection and DAF
 -------------------------
 The model's static deflection is the largest static midspan deflection under the weight over
 all load positions, from the same N modes (the crawl run of a finite-element study;
-:func:`vbi_lib.beam_modes.largest_static_deflection`), and the DAF of span ``j`` divides the
+:func:`vbi_lib.modes.largest_static_deflection`), and the DAF of span ``j`` divides the
 largest downward midspan deflection while the wheel is on span ``j`` by it.  On other layouts
 than one span or two equal spans, the spans differ in stiffness and each span's DAF divides
 by its own largest static midspan deflection (``Crossing.static_deflection`` is then the
@@ -49,8 +49,8 @@ from dataclasses import dataclass
 import numba
 import numpy as np
 
-from ..beam_modes import BeamModes, beam_modes, largest_static_deflection, shape_values
 from ..bridges import Bridge
+from ..modes import BeamModes, beam_modes, largest_static_deflection, shape_values
 from ..vehicles import Vehicle
 from .base import (
     DEFAULT_OMEGA_DT,
@@ -291,7 +291,7 @@ class ModalCrossing(Crossing):
     Attributes
     ----------
     modes
-        The :class:`~vbi_lib.beam_modes.BeamModes` used.
+        The :class:`~vbi_lib.modes.BeamModes` used.
     modal_coordinates, modal_velocities
         ``q_n`` and ``dq_n/dt``, shape ``(n_time, N)`` [kg^1/2 m, kg^1/2 m/s].
     """

@@ -40,8 +40,8 @@ from dataclasses import dataclass
 import numba
 import numpy as np
 
-from ..beam_modes import BeamModes, beam_modes
 from ..bridges import Bridge
+from ..modes import BeamModes, beam_modes
 from ..vehicles import Vehicle
 from .base import (
     DEFAULT_OMEGA_DT,

@@ -25,8 +25,8 @@ import numpy as np
 import pandas as pd
 
 from .. import display
-from ..beam_modes import BeamModes
 from ..bridges import Bridge
+from ..modes import BeamModes
 from ..vehicles import Vehicle
 from .sections import SectionResponse, check_method, section_history, static_counterpart
 
@@ -58,7 +58,7 @@ class Crossing:
     Attributes
     ----------
     model
-        The model's name (a key of :data:`vbi_lib.models.MODELS`).
+        The model's name (a key of :data:`vbi_lib.models.driver.MODELS`).
     bridge, vehicle
         The inputs.
     speed

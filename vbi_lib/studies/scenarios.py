@@ -154,7 +154,7 @@ def grid(
         Station(s) of the first support [m].
     **axes
         More axes: ``profile_offsets`` (slide of the road under the bridge [m], >= 0),
-        ``coupled``, ``convective``, ``model`` (a key of :data:`vbi_lib.MODELS`) and
+        ``coupled``, ``convective``, ``model`` (a key of :data:`vbi_lib.models.driver.MODELS`) and
         ``modes`` (the number of beam modes, for ``model="modal"`` only).
 
     Returns
