@@ -168,29 +168,37 @@ def node_grid(
 # ---------------------------------------------------------------------------- kernel helpers
 @numba.njit(cache=True)
 def hermite_min(a0, a1, d0, d1, h):
-    """Smallest value inside a step of the cubic Hermite interpolant (values a, rates d)."""
+    """Smallest value inside a step of the cubic Hermite interpolant (values a, rates d).
+
+    The cubic is written in the change ``a1 - a0`` and its stationary points are found with
+    the cancellation-free form of the quadratic formula, so the result is as accurate as
+    the data when the cubic is nearly a parabola.
+    """
     m0 = h * d0
     m1 = h * d1
-    c3 = 2.0 * a0 + m0 - 2.0 * a1 + m1
-    c2 = -3.0 * a0 - 2.0 * m0 + 3.0 * a1 - m1
+    rise = a1 - a0
+    c3 = m0 + m1 - 2.0 * rise
+    c2 = 3.0 * rise - 2.0 * m0 - m1
     c1 = m0
     best = min(a0, a1)
     qa = 3.0 * c3
     qb = 2.0 * c2
     qc = c1
-    if abs(qa) < 1e-300:
-        if abs(qb) > 1e-300:
-            t = -qc / qb
-            if 0.0 < t < 1.0:
-                best = min(best, ((c3 * t + c2) * t + c1) * t + a0)
-        return best
     disc = qb * qb - 4.0 * qa * qc
     if disc < 0.0:
         return best
-    root = math.sqrt(disc)
-    for t in ((-qb - root) / (2.0 * qa), (-qb + root) / (2.0 * qa)):
+    q = -0.5 * (qb + math.copysign(math.sqrt(disc), qb))
+    for k in range(2):
+        if k == 0:
+            if qa == 0.0:
+                continue
+            t = q / qa
+        else:
+            if q == 0.0:
+                continue
+            t = qc / q
         if 0.0 < t < 1.0:
-            best = min(best, ((c3 * t + c2) * t + c1) * t + a0)
+            best = min(best, a0 + ((c3 * t + c2) * t + c1) * t)
     return best
 
 
