@@ -10,7 +10,7 @@ The library behind the *vbi* book.  SI units throughout; :mod:`vbi_lib.units` co
 3.99
 """
 
-from . import amplification, display, models, monitoring, roughness, studies, units
+from . import amplification, display, models, monitoring, roughness, studies, units, vehicles
 from .beam_modes import BeamModes, beam_modes
 from .bridges import Bridge, reference_beam, shape_function_error
 from .models import (
@@ -34,7 +34,7 @@ from .profiles import (
 )
 from .roughness import contact_force_amplification, fit_iso8608, iri, profile_spectrum
 from .validity import ContactLossWarning, VbiWarning
-from .vehicles import Vehicle
+from .vehicles import QuarterCar, Vehicle, VehicleSystem
 
 __all__ = [
     "MODELS",
@@ -48,8 +48,10 @@ __all__ = [
     "OneCoordinateCrossing",
     "Profile",
     "ProfileFileError",
+    "QuarterCar",
     "VbiWarning",
     "Vehicle",
+    "VehicleSystem",
     "amplification",
     "beam_modes",
     "contact_force_amplification",
@@ -71,6 +73,7 @@ __all__ = [
     "state_matrices",
     "studies",
     "units",
+    "vehicles",
 ]
 
 __version__ = "0.2.0"
