@@ -28,6 +28,7 @@ from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
 from ..validity import ContactLossWarning
+from ..vehicles import Vehicle, as_system
 from .recipes import extent, profile_label
 from .scenarios import TAG_PREFIX, _rows, validate
 
@@ -76,6 +77,7 @@ _SUMMARIES = (
     "peak_contact_position",
     "min_contact_force_ratio",
     "tension_fraction",
+    "flight_fraction",
     "dt",
 )
 
@@ -182,8 +184,11 @@ def _labels(objects: Sequence[Any], kind: str) -> list[str]:
     for obj in objects:
         if kind == "bridge":
             out.append(f"{obj.n_spans} x {obj.span:g} m, {obj.first_frequency_hz:.2f} Hz")
-        elif kind == "vehicle":
+        elif kind == "vehicle" and isinstance(obj, Vehicle):
             out.append(f"{obj.mass:.0f} kg, {obj.frequency_hz:.2f} Hz")
+        elif kind == "vehicle":
+            system = as_system(obj)
+            out.append(f"{system.name or type(obj).__name__}, {system.total_mass:.0f} kg")
         else:
             out.append(profile_label(obj))
     return out
@@ -255,16 +260,20 @@ def run(
         Indexed like ``scenarios``.  Inputs as plain columns: the ``*_name`` labels,
         ``bridge_span`` [m], ``bridge_n_spans``, ``bridge_EI`` [N m^2],
         ``bridge_mass_per_length`` [kg/m], ``bridge_damping_ratio``, ``bridge_f1_hz``,
-        ``vehicle_mass`` [kg], ``vehicle_stiffness`` [N/m], ``vehicle_damping`` [N s/m],
-        ``vehicle_f_hz``, ``vehicle_damping_ratio``, ``profile_*`` (the recipe's fields),
+        ``vehicle_mass`` [kg] (the whole vehicle's), ``vehicle_axles``, and for the study's
+        sprung mass ``vehicle_stiffness`` [N/m], ``vehicle_damping`` [N s/m],
+        ``vehicle_f_hz``, ``vehicle_damping_ratio`` (NaN for other vehicles),
+        ``profile_*`` (the recipe's fields),
         ``speed`` [m/s], ``bridge_start``, ``profile_offset`` [m], ``coupled``,
         ``convective``, ``model``, ``modes`` and any ``tag_*`` columns; results: ``daf_1``,
         ``daf_2`` (NaN for one span), ``daf`` (the larger), ``contact_force_amplification``,
-        ``peak_contact_position`` [m] and ``peak_contact_time`` [s from the start] of the
-        largest contact force on the bridge; the contact checks
-        ``min_contact_force_ratio``, ``tension_fraction`` and ``lost_contact`` (a crossing
-        that lost contact is outside the model's validity; one ``ContactLossWarning`` says how
-        many did); ``dt`` [s] and, on request, ``iri_1``, ``iri_2``.
+        ``peak_contact_position`` [m] and ``peak_contact_time`` [s from the start; one-axle
+        vehicles] of the largest contact force on the bridge; the contact checks
+        ``min_contact_force_ratio`` (worst axle), ``tension_fraction``,
+        ``flight_fraction`` (a tyre off the road, modelled), ``outside_validity`` (a
+        bilateral contact became tensile: outside the model's validity; one
+        ``ContactLossWarning`` says how many did) and ``lost_contact`` (either);
+        ``dt`` [s] and, on request, ``iri_1``, ``iri_2``.
 
     Examples
     --------
@@ -410,12 +419,17 @@ def run(
         "bridge_damping_ratio": [x.damping_ratio for x in bridges],
         "bridge_f1_hz": [x.first_frequency_hz for x in bridges],
     }
+
+    def sprung(name: str) -> list[float]:
+        return [getattr(x, name) if isinstance(x, Vehicle) else np.nan for x in vehicles]
+
     vehicle_cols = {
-        "vehicle_mass": [x.mass for x in vehicles],
-        "vehicle_stiffness": [x.stiffness for x in vehicles],
-        "vehicle_damping": [x.damping for x in vehicles],
-        "vehicle_f_hz": [x.frequency_hz for x in vehicles],
-        "vehicle_damping_ratio": [x.damping_ratio for x in vehicles],
+        "vehicle_mass": [as_system(x).total_mass for x in vehicles],
+        "vehicle_axles": [as_system(x).n_axles for x in vehicles],
+        "vehicle_stiffness": sprung("stiffness"),
+        "vehicle_damping": sprung("damping"),
+        "vehicle_f_hz": sprung("frequency_hz"),
+        "vehicle_damping_ratio": sprung("damping_ratio"),
     }
     for cols, codes in ((bridge_cols, b_code), (vehicle_cols, v_code)):
         for name, values in cols.items():
@@ -442,10 +456,13 @@ def run(
     out["contact_force_amplification"] = summaries["contact_force_amplification"]
     out["peak_contact_position"] = where = summaries["peak_contact_position"]
     starts = np.array([extent(p)[0] for p in profiles])[p_code]
-    out["peak_contact_time"] = (where - starts) / arrays["speed"]
+    one_axle = np.array([as_system(x).n_axles == 1 for x in vehicles])[v_code]
+    out["peak_contact_time"] = np.where(one_axle, (where - starts) / arrays["speed"], np.nan)
     out["min_contact_force_ratio"] = summaries["min_contact_force_ratio"]
     out["tension_fraction"] = summaries["tension_fraction"]
-    out["lost_contact"] = lost = summaries["min_contact_force_ratio"] < 0
+    out["flight_fraction"] = summaries["flight_fraction"]
+    out["outside_validity"] = lost = summaries["min_contact_force_ratio"] < 0
+    out["lost_contact"] = lost | (summaries["flight_fraction"] > 0)
     out["dt"] = summaries["dt"]
     if lost.any():
         warnings.warn(
