@@ -236,3 +236,32 @@ def test_flat_roads_never_warn_for_any_vehicle(options: dict, vehicle: object) -
     assert not crossing.lost_contact and crossing.flight_fraction == 0.0
     assert crossing.tension_fraction == 0.0 and not crossing.contact_events.size
     assert 0.0 < crossing.min_contact_force_ratio < 1.0 < crossing.contact_force_amplification
+
+
+@MODELS
+@pytest.mark.parametrize("name", ["40ft-10Hz-one-span", "100ft-4Hz-two-spans"])
+@pytest.mark.parametrize("roughness", [1.0, 8.0])
+def test_the_general_kernel_reproduces_the_sprung_mass_kernel(
+    options: dict, name: str, roughness: float
+) -> None:
+    """The study's sprung mass runs on its compiled kernel; as a VehicleSystem (one dof, one
+    bilateral contact) it runs on the general kernel of every vehicle: the same crossing,
+    to round-off, on the study's cases (the rough one loses contact)."""
+    bridge, vehicle, road, speed, start = build_case(name)
+    road = vbi.Profile(road.x, roughness * road.elevation)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", vbi.ContactLossWarning)
+        fast = vbi.simulate(bridge, vehicle, road, speed, start, free_vibration=0.3, **options)
+        general = vbi.simulate(bridge, vehicle.system, road, speed, start, free_vibration=0.3,
+                               **options)  # fmt: skip
+    assert general.time.size == fast.time.size
+    for field in ("midspan_displacement", "vehicle_displacement", "vehicle_velocity",
+                  "contact_force"):  # fmt: skip
+        a, b = getattr(general, field), getattr(fast, field)
+        assert np.abs(a - b).max() <= 1e-12 * np.abs(b).max(), field
+    np.testing.assert_allclose(general.daf, fast.daf, rtol=1e-12)
+    assert general.min_contact_force_ratio == pytest.approx(fast.min_contact_force_ratio, 1e-12)
+    assert general.tension_fraction == pytest.approx(fast.tension_fraction, abs=1e-12)
+    assert general.contact_force_amplification == pytest.approx(
+        fast.contact_force_amplification, rel=1e-12
+    )

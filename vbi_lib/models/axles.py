@@ -41,20 +41,28 @@ EVENT_TOLERANCE = 1e-13
 
 def vehicle_vector(system: VehicleSystem, u0: np.ndarray) -> np.ndarray:
     """The vehicle as one flat vector for the kernels (layout of :func:`unpack`)."""
-    parts = (
-        system.mass,
-        system.mass_inverse,
-        system.stiffness,
-        system.damping,
-        system.contact,
-        system.static_loads,
-        system.contact_stiffness,
-        system.contact_damping,
-        system.offsets,
-        system.unilateral.astype(float),
-        u0,
-    )
-    return np.concatenate([np.ravel(p) for p in parts])
+    return np.concatenate((_matrices(system), u0))
+
+
+def _matrices(system: VehicleSystem) -> np.ndarray:
+    """Every part of :func:`vehicle_vector` but the initial state (computed once a system)."""
+    cached = system.__dict__.get("_kernel_matrices")
+    if cached is None:
+        parts = (
+            system.mass,
+            system.mass_inverse,
+            system.stiffness,
+            system.damping,
+            system.contact,
+            system.static_loads,
+            system.contact_stiffness,
+            system.contact_damping,
+            system.offsets,
+            system.unilateral.astype(float),
+        )
+        cached = np.concatenate([np.ravel(p) for p in parts])
+        system.__dict__["_kernel_matrices"] = cached
+    return cached
 
 
 def vector_size(n: int, n_axles: int) -> int:

@@ -189,8 +189,11 @@ def node_grid(
     footprints = np.zeros(1) if vehicle is None else vehicle.footprint
     first = profile.start + float(offsets.max())
     supports = bridge_start + bridge.span * np.arange(bridge.n_spans + 1)
-    shifted = (profile.x[None, :] + offsets[:, None]).ravel()
-    below = (supports[None, :] + offsets[:, None]).ravel()
+    if offsets.size == 1:  # one axle: the samples themselves
+        shifted, below = profile.x, supports
+    else:
+        shifted = (profile.x[None, :] + offsets[:, None]).ravel()
+        below = (supports[None, :] + offsets[:, None]).ravel()
     inside = shifted[(shifted > first) & (shifted < stop)]
     below = below[below >= first]
     points = np.union1d(np.concatenate(([first], inside, below)), [stop])
@@ -204,7 +207,7 @@ def node_grid(
     widths = np.repeat(gaps / pieces, pieces)
     within = np.arange(pieces.sum()) - np.repeat(np.cumsum(pieces) - pieces, pieces)
     x = np.append(starts + within * widths, points[-1])
-    seen: dict[float, np.ndarray] = {}
+    seen: dict[float, np.ndarray] = {0.0: profile.elevation}
     road = np.empty((offsets.size, x.size))
     axle_span = np.zeros((offsets.size, x.size), dtype=np.int64)
     for a, (offset, footprint) in enumerate(zip(offsets, footprints, strict=True)):

@@ -80,14 +80,12 @@ def kernel(x, road, axle_span, params, n_spans, coupled, convective, vec, n, n_a
     dyn = np.empty(n_axles)
     force = np.empty(n_axles)
     gen = np.empty(n)
-    k1 = np.empty(m)
-    k2 = np.empty(m)
-    k3 = np.empty(m)
-    k4 = np.empty(m)
+    start_gap = np.zeros(n_axles)
+    end_gap = np.zeros(n_axles)
+    slopes = np.empty((4, m))  # the four RK4 stages
     tmp = np.empty(m)
     y = np.zeros(m)
     trial = np.empty(m)
-    probe = np.empty(m)
     flying = np.zeros(n_axles, dtype=np.bool_)
     spans = np.zeros(max(n_spans, 1), dtype=np.bool_)
 
@@ -169,51 +167,28 @@ def kernel(x, road, axle_span, params, n_spans, coupled, convective, vec, n, n_a
         out[2 * n + 1] = (-c_b * yy[2 * n + 1] - k_b * yy[2 * n] - on_bridge) / m_b
 
     def rk4(y0, y1, th0, th1, k, k1_ready):
-        """RK4 over step ``k`` from fraction ``th0`` to ``th1`` (``k1`` holds f(th0) if ready)."""
+        """RK4 over step ``k`` from ``th0`` to ``th1`` (``slopes[0]`` holds f(th0) if ready).
+
+        One loop over the four stages, so the right-hand side is compiled once.
+        """
         h = (x[k + 1] - x[k]) / speed * (th1 - th0)
-        if not k1_ready:
-            inputs(th0, k)
-            derivative(k1, y0)
-        inputs(0.5 * (th0 + th1), k)
+        mid = 0.5 * (th0 + th1)
+        for stage in range(4):
+            if stage == 0:
+                if k1_ready:
+                    continue
+                for i in range(m):
+                    tmp[i] = y0[i]
+            else:
+                scale = h if stage == 3 else 0.5 * h
+                for i in range(m):
+                    tmp[i] = y0[i] + scale * slopes[stage - 1, i]
+            if stage != 2:
+                inputs(th0 if stage == 0 else (mid if stage == 1 else th1), k)
+            derivative(slopes[stage], tmp)
         for i in range(m):
-            tmp[i] = y0[i] + 0.5 * h * k1[i]
-        derivative(k2, tmp)
-        for i in range(m):
-            tmp[i] = y0[i] + 0.5 * h * k2[i]
-        derivative(k3, tmp)
-        inputs(th1, k)
-        for i in range(m):
-            tmp[i] = y0[i] + h * k3[i]
-        derivative(k4, tmp)
-        for i in range(m):
-            y1[i] = y0[i] + h * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]) / 6.0
-
-    def gap(a, yy, theta, k):
-        """Positive while axle ``a`` keeps its contact state: ``P_a``, or ``-P_a`` in flight."""
-        inputs(theta, k)
-        p = W[a] + dynamic(a, yy)
-        return -p if flying[a] else p
-
-    def event(th0, a, k):
-        """First fraction of step ``k`` after ``th0`` where axle ``a`` switches (Illinois)."""
-        lo = th0
-        glo = gap(a, y, th0, k)
-        if glo <= 0.0:
-            return th0
-        hi = 1.0
-        rk4(y, probe, th0, 1.0, k, False)
-        ghi = gap(a, probe, 1.0, k)
-        side = 0
-        for _ in range(200):
-            if hi - lo <= EVENT_TOLERANCE:
-                break
-            t = next_trial(lo, glo, hi, ghi)
-            rk4(y, probe, th0, t, k, False)
-            gt = gap(a, probe, t, k)
-            if gt == 0.0:
-                return t
-            lo, glo, hi, ghi, side = illinois_step(lo, glo, hi, ghi, t, gt, side)
-        return hi
+            y1[i] = y0[i] + h * (slopes[0, i] + 2.0 * slopes[1, i] + 2.0 * slopes[2, i]
+                                 + slopes[3, i]) / 6.0  # fmt: skip
 
     def peaks(y0, y1, h):
         """Midspan peaks of the occupied spans between two states ``h`` seconds apart."""
@@ -241,16 +216,17 @@ def kernel(x, road, axle_span, params, n_spans, coupled, convective, vec, n, n_a
             for a in range(n_axles):
                 known = known and axle_span[a, k] == axle_span[a, k - 1]
         inputs(1.0 if last else 0.0, step, known)
-        derivative(k1, y)
-        switched = False
+        derivative(slopes[0], y)
+        fresh = True  # slopes[0] is the derivative at the (sub)step's start
         for a in range(n_axles):
             if unilateral[a]:
                 p = W[a] + dyn[a]
                 now = p < 0.0 if not flying[a] else p <= 0.0
                 if now != flying[a]:
-                    switched = True
+                    fresh = False
                     log_event(events, event_count, (x[k] - x[0]) / speed, a, now, x[k] - off[a])
                 flying[a] = now
+                start_gap[a] = -p if now else p
             force[a] = 0.0 if flying[a] else W[a] + dyn[a]
         if record:
             for a in range(n_axles):
@@ -260,34 +236,78 @@ def kernel(x, road, axle_span, params, n_spans, coupled, convective, vec, n, n_a
         if last:
             break
         occupied(axle_span, k, n_spans, spans)
+        # one integrator call site for the whole step: phase 0 steps to the end of the
+        # step; if a tyre's force changed sign, phase 1 brackets the switch of ``axle``
+        # (Illinois, each trial a step from th0) and phase 2 takes the step to it.
+        # start_gap / end_gap: each tyre's force at the (sub)step's start and at the trial's
+        # end, signed to be positive while it keeps its contact state
         th0 = 0.0
+        target = 1.0
+        phase = 0
+        axle = -1
+        lo = glo = hi = ghi = 0.0
+        side = 0
+        tries = 0
         switches = 0
-        at_end = True  # every pass below ends with the inputs at the step's end
         while True:
-            rk4(y, trial, th0, 1.0, k, th0 == 0.0 and not switched)
-            first = 2.0
-            if switches < MAX_EVENTS:
+            rk4(y, trial, th0, target, k, fresh)
+            fresh = True
+            for a in range(n_axles):  # the one place the tyres' end-of-trial forces are read
+                if unilateral[a]:
+                    p = W[a] + dynamic(a, trial)  # the inputs are at the target already
+                    end_gap[a] = -p if flying[a] else p
+            done = False
+            if phase == 1:
+                tries += 1
+                gt = end_gap[axle]
+                if gt == 0.0:
+                    hi = target
+                else:
+                    lo, glo, hi, ghi, side = illinois_step(lo, glo, hi, ghi, target, gt, side)
+                if gt == 0.0 or hi - lo <= EVENT_TOLERANCE or tries >= 200:
+                    phase = 2
+                    target = hi
+                else:
+                    target = next_trial(lo, glo, hi, ghi)
+                continue
+            # phase 0: any switch in the step?  phase 2: any switch before the located one?
+            found = -1
+            if switches < MAX_EVENTS and target > th0:
                 for a in range(n_axles):
-                    if unilateral[a] and gap(a, trial, 1.0, k) < 0.0:
-                        first = min(first, event(th0, a, k))
-            end = min(first, 1.0)
-            if first <= 1.0:
-                rk4(y, trial, th0, first, k, False)
-            peaks(y, trial, h * (end - th0))
-            track_flight(summary, flying, axle_span, k, h * (end - th0))
+                    if found < 0 and unilateral[a] and a != axle and end_gap[a] < 0.0:
+                        found = a
+            if found >= 0:
+                axle = found
+                lo, glo, hi, ghi, side, tries = th0, start_gap[axle], target, end_gap[axle], 0, 0
+                phase = 2 if glo <= 0.0 else 1
+                target = th0 if glo <= 0.0 else next_trial(lo, glo, hi, ghi)
+                continue
+            done = phase == 0
+            peaks(y, trial, h * (target - th0))
+            track_flight(summary, flying, axle_span, k, h * (target - th0))
             for i in range(m):
                 y[i] = trial[i]
-            if first > 1.0:
+            if done:
                 break
+            fresh = False
             for a in range(n_axles):  # switch every axle whose contact state changes here
-                if unilateral[a] and gap(a, y, first, k) <= 0.0:
+                start_gap[a] = end_gap[a]
+                if unilateral[a] and end_gap[a] <= 0.0:
                     flying[a] = not flying[a]
-                    log_event(events, event_count, (x[k] - x[0]) / speed + first * h, a,
-                              flying[a], x[k] + first * (x[k + 1] - x[k]) - off[a])  # fmt: skip
+                    start_gap[a] = -end_gap[a]
+                    log_event(events, event_count, (x[k] - x[0]) / speed + target * h, a,
+                              flying[a], x[k] + target * (x[k + 1] - x[k]) - off[a])  # fmt: skip
                     if axle_span[a, k] > 0:  # its force passes through zero here
                         summary[S_MIN_FORCE] = min(summary[S_MIN_FORCE], 0.0)
             switches += 1
-            th0 = first
+            axle = -1
+            th0 = target
+            target = 1.0
+            phase = 0
+            if th0 >= 1.0:
+                inputs(1.0, k)  # leave the shape values at the step's end
+                break
+        at_end = True  # the last inputs were at the step's end
         if record:
             for i in range(m):
                 states[k + 1, i] = y[i]

@@ -55,14 +55,21 @@ def _contact(summary: np.ndarray, weight: float, unilateral: object = False) -> 
     The flight time is read only for vehicles with a unilateral contact (``unilateral``).
     """
     bridge_time = summary[..., S_BRIDGE_TIME]
+    if summary.ndim == 1:  # one crossing: plain numbers
+        on = bridge_time > 0
 
-    def fraction(column: int) -> np.ndarray:
-        return np.divide(
-            summary[..., column],
-            bridge_time,
-            out=np.zeros_like(bridge_time),
-            where=bridge_time > 0,
-        )
+        def fraction(column: int) -> float:
+            return float(summary[column] / bridge_time) if on else 0.0
+
+    else:
+
+        def fraction(column: int) -> np.ndarray:
+            return np.divide(
+                summary[:, column],
+                bridge_time,
+                out=np.zeros_like(bridge_time),
+                where=bridge_time > 0,
+            )
 
     flight = np.where(unilateral, fraction(S_FLIGHT_TIME), 0.0)
     return summary[..., S_MIN_FORCE] / weight, fraction(S_TENSION_TIME), flight

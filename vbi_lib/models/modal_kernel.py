@@ -80,13 +80,10 @@ def kernel(x, road, axle_span, params, kind, kappa, amp, omega, zeta, phi_mid, c
     # shapes and road under the axles at the (sub)step's start, end and a probe point
     phi0 = np.zeros((n_axles, n_modes))
     dphi0 = np.zeros((n_axles, n_modes))
-    phi1 = np.zeros((n_axles, n_modes))
-    dphi1 = np.zeros((n_axles, n_modes))
     phit = np.zeros((n_axles, n_modes))
     dphit = np.zeros((n_axles, n_modes))
     ddphi = np.empty(n_modes)
     level0 = np.empty(n_axles)
-    level1 = np.empty(n_axles)
     levelt = np.empty(n_axles)
     rate = np.empty(n_axles)
     # workspace of a step
@@ -106,6 +103,8 @@ def kernel(x, road, axle_span, params, kind, kappa, amp, omega, zeta, phi_mid, c
     system = np.empty((n_axles, n_axles))
     rhs = np.empty((n_axles, 1))
     spans = np.zeros(max(n_spans, 1), dtype=np.bool_)
+    start_gap = np.zeros(n_axles)
+    end_gap = np.zeros(n_axles)
 
     def point(theta, k):
         if theta == 0.0:
@@ -145,21 +144,8 @@ def kernel(x, road, axle_span, params, kind, kappa, amp, omega, zeta, phi_mid, c
             ev += E[a, i] * vv[i]
         return kt[a] * (cpl * ub + level[a] - eu) + ct[a] * (cpl * ubd + rate[a] - ev)
 
-    def gap(a, phi, dphi, level, uu, vv, qq, qqd):
-        """Positive while axle ``a`` keeps its contact state: ``P_a``, or ``-P_a`` in flight."""
-        p = W[a] + dynamic(a, phi, dphi, level, uu, vv, qq, qqd)
-        return -p if flying[a] else p
-
-    def newmark(th0, th1, k, phi, dphi, level):
-        """Average-acceleration step from the state at ``th0`` (shapes ``phi0``) to ``th1``.
-
-        ``phi, dphi, level`` are at ``th1``; the end state goes to ``u1, v1, q1, qd1`` and the
-        axles' dynamic forces to ``force``.
-        """
-        h = (x[k + 1] - x[k]) / speed * (th1 - th0)
-        beta = 0.25 * h * h
-        gamma = 0.5 * h
-        # accelerations at the start, from the equations of motion
+    def start_accelerations():
+        """Accelerations at the (sub)step's start from the equations of motion (``phi0``)."""
         for a in range(n_axles):
             force[a] = -W[a] if flying[a] else dynamic(a, phi0, dphi0, level0, u, v, q, qd)
         for i in range(n):
@@ -179,6 +165,17 @@ def kernel(x, road, axle_span, params, kind, kappa, amp, omega, zeta, phi_mid, c
             for a in range(n_axles):
                 s -= phi0[a, j] * (W[a] + force[a])
             aq[j] = s
+
+    def newmark(th0, th1, k, phi, dphi, level):
+        """Average-acceleration step from the state at ``th0`` to ``th1``.
+
+        The start accelerations are ``av, aq`` (:func:`start_accelerations`); ``phi, dphi,
+        level`` are at ``th1``; the end state goes to ``u1, v1, q1, qd1`` and the axles'
+        dynamic forces to ``force``.
+        """
+        h = (x[k + 1] - x[k]) / speed * (th1 - th0)
+        beta = 0.25 * h * h
+        gamma = 0.5 * h
         # predictors
         for i in range(n):
             ut[i] = u[i] + h * v[i] + beta * av[i]
@@ -241,28 +238,6 @@ def kernel(x, road, axle_span, params, kind, kappa, amp, omega, zeta, phi_mid, c
             q1[j] = qt[j] + beta * s
             qd1[j] = qdt[j] + gamma * s
 
-    def event(th0, a, k):
-        """First fraction of step ``k`` after ``th0`` where axle ``a`` switches (Illinois)."""
-        lo = th0
-        glo = gap(a, phi0, dphi0, level0, u, v, q, qd)
-        if glo <= 0.0:
-            return th0
-        hi = 1.0
-        ghi = gap(a, phi1, dphi1, level1, u1, v1, q1, qd1)
-        side = 0
-        for _ in range(200):
-            if hi - lo <= EVENT_TOLERANCE:
-                break
-            t = next_trial(lo, glo, hi, ghi)
-            shapes(t, k, phit, dphit)
-            levels(t, k, levelt)
-            newmark(th0, t, k, phit, dphit, levelt)
-            gt = gap(a, phit, dphit, levelt, u1, v1, q1, qd1)
-            if gt == 0.0:
-                return t
-            lo, glo, hi, ghi, side = illinois_step(lo, glo, hi, ghi, t, gt, side)
-        return hi
-
     def midspan(j, qq):
         s = 0.0
         for m in range(n_modes):
@@ -295,7 +270,7 @@ def kernel(x, road, axle_span, params, kind, kappa, amp, omega, zeta, phi_mid, c
     start_summary(summary, n_spans)
     if record:
         record_state(0)
-    at_end = False  # phi1 holds the shapes at the end of the previous step
+    at_end = False  # phit holds the shapes at the end of the previous step
     for k in range(n_nodes):
         last = k == n_nodes - 1
         step = k - 1 if last else k
@@ -308,8 +283,8 @@ def kernel(x, road, axle_span, params, kind, kappa, amp, omega, zeta, phi_mid, c
             for a in range(n_axles):
                 known = known and axle_span[a, k] == axle_span[a, k - 1]
         if known:
-            phi0[:, :] = phi1
-            dphi0[:, :] = dphi1
+            phi0[:, :] = phit
+            dphi0[:, :] = dphit
         else:
             shapes(theta, step, phi0, dphi0)
         levels(theta, step, level0)
@@ -320,6 +295,7 @@ def kernel(x, road, axle_span, params, kind, kappa, amp, omega, zeta, phi_mid, c
                 if now != flying[a]:
                     log_event(events, event_count, (x[k] - x[0]) / speed, a, now, x[k] - off[a])
                 flying[a] = now
+                start_gap[a] = -p if now else p
             pressing[a] = 0.0 if flying[a] else p
         if record:
             for a in range(n_axles):
@@ -329,36 +305,81 @@ def kernel(x, road, axle_span, params, kind, kappa, amp, omega, zeta, phi_mid, c
         if last:
             break
         occupied(axle_span, k, n_spans, spans)
+        # one integrator call site for the whole step: phase 0 steps to the end of the
+        # step; if a tyre's force changed sign, phase 1 brackets the switch of ``axle``
+        # (Illinois, each trial a step from th0) and phase 2 takes the step to it.
+        # start_gap / end_gap: each tyre's force at the (sub)step's start and at the trial's
+        # end, signed to be positive while it keeps its contact state
         th0 = 0.0
+        target = 1.0
+        phase = 0
+        axle = -1
+        lo = glo = hi = ghi = 0.0
+        side = 0
+        tries = 0
         switches = 0
+        fresh = False  # av, aq hold the accelerations at the (sub)step's start
         while True:
-            shapes(1.0, k, phi1, dphi1)
-            levels(1.0, k, level1)
-            newmark(th0, 1.0, k, phi1, dphi1, level1)
-            first = 2.0
-            if switches < MAX_EVENTS:
+            shapes(target, k, phit, dphit)
+            levels(target, k, levelt)
+            if not fresh:
+                start_accelerations()
+                fresh = True
+            newmark(th0, target, k, phit, dphit, levelt)
+            for a in range(n_axles):  # the one place the tyres' end-of-trial forces are read
+                if unilateral[a]:
+                    p = W[a] + dynamic(a, phit, dphit, levelt, u1, v1, q1, qd1)
+                    end_gap[a] = -p if flying[a] else p
+            done = False
+            if phase == 1:
+                tries += 1
+                gt = end_gap[axle]
+                if gt == 0.0:
+                    hi = target
+                else:
+                    lo, glo, hi, ghi, side = illinois_step(lo, glo, hi, ghi, target, gt, side)
+                if gt == 0.0 or hi - lo <= EVENT_TOLERANCE or tries >= 200:
+                    phase = 2
+                    target = hi
+                else:
+                    target = next_trial(lo, glo, hi, ghi)
+                continue
+            # phase 0: any switch in the step?  phase 2: any switch before the located one?
+            found = -1
+            if switches < MAX_EVENTS and target > th0:
                 for a in range(n_axles):
-                    if unilateral[a] and gap(a, phi1, dphi1, level1, u1, v1, q1, qd1) < 0.0:
-                        first = min(first, event(th0, a, k))
-            if first > 1.0:
-                accept(h * (1.0 - th0), k)
+                    if found < 0 and unilateral[a] and a != axle and end_gap[a] < 0.0:
+                        found = a
+            if found >= 0:
+                axle = found
+                lo, glo, hi, ghi, side, tries = th0, start_gap[axle], target, end_gap[axle], 0, 0
+                phase = 2 if glo <= 0.0 else 1
+                target = th0 if glo <= 0.0 else next_trial(lo, glo, hi, ghi)
+                continue
+            done = phase == 0
+            accept(h * (target - th0), k)
+            if done:
                 break
-            shapes(first, k, phit, dphit)
-            levels(first, k, levelt)
-            newmark(th0, first, k, phit, dphit, levelt)
-            accept(h * (first - th0), k)
-            phi0[:, :] = phit  # the event point is the next sub-step's start
+            fresh = False
+            phi0[:, :] = phit  # the switch is the next sub-step's start
             dphi0[:, :] = dphit
             level0[:] = levelt
             for a in range(n_axles):  # switch every axle whose contact state changes here
-                if unilateral[a] and gap(a, phi0, dphi0, level0, u, v, q, qd) <= 0.0:
+                start_gap[a] = end_gap[a]
+                if unilateral[a] and end_gap[a] <= 0.0:
                     flying[a] = not flying[a]
-                    log_event(events, event_count, (x[k] - x[0]) / speed + first * h, a,
-                              flying[a], x[k] + first * (x[k + 1] - x[k]) - off[a])  # fmt: skip
+                    start_gap[a] = -end_gap[a]
+                    log_event(events, event_count, (x[k] - x[0]) / speed + target * h, a,
+                              flying[a], x[k] + target * (x[k + 1] - x[k]) - off[a])  # fmt: skip
                     if axle_span[a, k] > 0:  # its force passes through zero here
                         summary[S_MIN_FORCE] = min(summary[S_MIN_FORCE], 0.0)
             switches += 1
-            th0 = first
+            axle = -1
+            th0 = target
+            target = 1.0
+            phase = 0
+            if th0 >= 1.0:
+                break
         at_end = True
         if record:
             record_state(k + 1)

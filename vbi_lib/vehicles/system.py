@@ -257,13 +257,15 @@ class VehicleSystem:
             self.road_stiffness, self.contact.T * self.contact_stiffness[None, :]
         )
 
-    @property
+    @cached_property
     def circular_frequencies(self) -> np.ndarray:
         """Undamped natural frequencies on a rigid road, every contact on [rad/s], increasing."""
         import scipy.linalg
 
         values = scipy.linalg.eigh(self.road_stiffness, self.mass, eigvals_only=True)
-        return np.sqrt(np.maximum(values, 0.0))
+        result = np.sqrt(np.maximum(values, 0.0))
+        result.setflags(write=False)
+        return result
 
     @property
     def frequencies_hz(self) -> np.ndarray:
