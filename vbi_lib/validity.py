@@ -43,7 +43,13 @@ def flight_note(flight_fraction: float) -> str:
     >>> flight_note(0.05)[:48]
     'a tyre left the road for 5% of the time on the b'
     """
-    return (
+    text = (
         f"a tyre left the road for {flight_fraction:.0%} of the time on the bridge: its contact "
         "force cannot pull, so the wheel flew and landed again (modelled, within validity)"
     )
+    if flight_fraction > 0.25:
+        text += (
+            "; a wheel that bounces this much makes the crossing a chain of impacts whose "
+            "timing grows sensitive to every input (halve dt to see how much the DAF moves)"
+        )
+    return text
