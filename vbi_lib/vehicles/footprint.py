@@ -59,6 +59,11 @@ def footprint_average(x: np.ndarray, elevation: np.ndarray, length: float) -> np
     ndarray
         The averaged elevation at each station [m], same shape as ``x``.
 
+    Raises
+    ------
+    ValueError
+        A negative or non-finite ``length``.
+
     Examples
     --------
     A 10 mm step (rising between 1.000 and 1.001 m) averaged over 0.25 m is a ramp:
@@ -80,6 +85,28 @@ def footprint_average(x: np.ndarray, elevation: np.ndarray, length: float) -> np
 
 def seen_by_tyre(profile: Profile, footprint: float = DEFAULT_FOOTPRINT) -> Profile:
     """The road a tyre of contact length ``footprint`` [m] rides (a new :class:`Profile`).
+
+    The profile averaged by :func:`footprint_average` at its own stations; the crossing
+    models apply it to every tyre themselves, this is for looking at it.
+
+    Parameters
+    ----------
+    profile
+        The road.
+    footprint
+        Contact length [m], >= 0 (0 returns ``profile`` itself).
+
+    Returns
+    -------
+    Profile
+        Same stations, averaged elevations [m].
+
+    Raises
+    ------
+    TypeError
+        ``profile`` is not a :class:`Profile`.
+    ValueError
+        A negative or non-finite ``footprint``.
 
     Examples
     --------
