@@ -5,10 +5,13 @@ from one model to the next: its compiled kernel, the default time step it needs 
 static deflection its DAF divides by.  Everything else is here, written once:
 
 * the checks of a crossing's inputs (:func:`check_crossing`);
-* the node grid (:func:`node_grid`): every profile sample, the bridge ends and the interior
-  supports are nodes, so the road is a straight line within a step and the coefficients
-  switch only at nodes; gaps longer than ``speed * dt`` are subdivided evenly;
-* broadcasting of the batch arguments (:func:`broadcast`);
+* the node grid (:func:`~vbi_lib.models.grid.node_grid`, compiled): every profile sample,
+  the bridge ends and the interior supports are nodes, so the road is a straight line within
+  a step and the coefficients switch only at nodes; gaps longer than ``speed * dt`` are
+  subdivided evenly;
+* the checked inputs of a batch (:class:`Batch`) and what a model does with one
+  (:meth:`CrossingModel.integrate_many` and friends, with fallbacks that take one crossing
+  at a time);
 * the refinement of the midspan peaks inside a step (:func:`downward_peak`, from the cubic
   Hermite interpolant of the displacement and its rate at the step's ends);
 * the bookkeeping of the contact force on the bridge (:func:`track_contact`): its largest and
@@ -33,6 +36,9 @@ from ..bridges import Bridge
 from ..profiles import Profile
 from ..units import g as GRAVITY
 from ..vehicles import Vehicle
+from .grid import Grid, node_grid
+
+__all__ = ["Batch", "CrossingModel", "Grid", "check_crossing", "node_grid"]
 
 #: ``omega * dt`` of the default time step.
 DEFAULT_OMEGA_DT = 0.1
@@ -89,19 +95,66 @@ def check_crossing(
     return speed, bridge_start
 
 
-def broadcast(args: dict[str, Any], caller: str) -> tuple[int, dict[str, list]]:
-    """Repeat single values to the common length of the list arguments of a batch function."""
-    lengths = {k: len(v) for k, v in args.items() if isinstance(v, list | tuple | np.ndarray)}
-    if len(set(lengths.values())) > 1:
-        raise ValueError(f"list arguments must have one length; got {lengths}")
-    n = next(iter(lengths.values())) if lengths else 1
-    if n == 0:
-        raise ValueError(f"{caller} needs at least one crossing; got empty lists")
-    expanded = {
-        k: (list(v) if isinstance(v, list | tuple | np.ndarray) else [v] * n)
-        for k, v in args.items()
-    }
-    return n, expanded
+@dataclass(frozen=True, eq=False)
+class Batch:
+    """The checked inputs of ``n`` crossings, one array entry per crossing.
+
+    Objects shared by crossings are stored once: crossing ``i`` has the bridge
+    ``bridges[bridge[i]]``, the vehicle ``vehicles[vehicle[i]]`` and the road
+    ``profiles[profile[i]]``.  ``modes[i]`` is the model's checked ``modes`` option, 0 for a
+    model that takes none.  Built by :func:`vbi_lib.simulate_many`.
+    """
+
+    bridges: tuple[Bridge, ...]
+    vehicles: tuple[Any, ...]
+    profiles: tuple[Profile, ...]
+    bridge: np.ndarray
+    vehicle: np.ndarray
+    profile: np.ndarray
+    speed: np.ndarray
+    bridge_start: np.ndarray
+    coupled: np.ndarray
+    convective: np.ndarray
+    modes: np.ndarray
+
+    def __len__(self) -> int:
+        return int(self.speed.size)
+
+    def column(self, objects: str, attribute: str) -> np.ndarray:
+        """An attribute of each crossing's bridge or vehicle, e.g. ``column("bridges", "span")``."""
+        values = np.array([getattr(obj, attribute) for obj in getattr(self, objects)])
+        return values[getattr(self, objects[:-1])]
+
+    @staticmethod
+    def groups(*keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Distinct rows of the key columns: one crossing of each, and each crossing's row.
+
+        Returns ``(first, inverse)``: ``first[k]`` is a crossing with the ``k``-th distinct
+        combination of keys, and crossing ``i`` has combination ``inverse[i]``.
+        """
+        order = np.lexsort(keys[::-1])
+        change = np.zeros(order.size, dtype=bool)
+        change[0] = True
+        for key in keys:
+            ordered = key[order]
+            change[1:] |= ordered[1:] != ordered[:-1]
+        label = np.cumsum(change) - 1
+        inverse = np.empty(order.size, np.int64)
+        inverse[order] = label
+        return order[change], inverse
+
+    def plain_vehicles(self) -> bool:
+        """Whether every vehicle is the study's sprung mass (the lane kernels take only those)."""
+        return all(type(v) is Vehicle for v in self.vehicles)
+
+    def crossing(self, i: int) -> tuple[Bridge, Any, Profile, float, float, dict[str, Any]]:
+        """Crossing ``i``'s bridge, vehicle, road, speed, bridge start and model options."""
+        modes = int(self.modes[i]) if self.modes[i] else None
+        options = {"coupled": bool(self.coupled[i]), "convective": bool(self.convective[i]),
+                   "modes": modes}  # fmt: skip
+        return (self.bridges[self.bridge[i]], self.vehicles[self.vehicle[i]],
+                self.profiles[self.profile[i]], float(self.speed[i]),
+                float(self.bridge_start[i]), options)  # fmt: skip
 
 
 def parameters(
@@ -117,52 +170,6 @@ def parameters(
     params[P_START] = bridge_start
     params[P_SPAN] = span
     return params
-
-
-# ---------------------------------------------------------------------------- grid
-@dataclass(frozen=True)
-class Grid:
-    """Nodes of one crossing: stations [m], road elevations [m] and the span of each step.
-
-    ``span_of_step[k]`` is 0 off the bridge, else the span (1, 2, ...) the wheel is on from
-    node ``k`` to node ``k + 1``; it has one entry per node (the last unused), so that batches
-    slice nodes and steps with the same offsets.  ``dt_max`` is the longest step [s].
-    """
-
-    x: np.ndarray
-    elevation: np.ndarray
-    span_of_step: np.ndarray
-    dt_max: float
-
-
-def node_grid(
-    bridge: Bridge, profile: Profile, speed: float, bridge_start: float, dt: float, stop: float
-) -> Grid:
-    """Nodes: every profile sample before ``stop``, the bridge ends and supports, subdivided.
-
-    A gap between two of those points longer than ``speed * dt`` is cut into equal steps no
-    longer than that.
-    """
-    supports = bridge_start + bridge.span * np.arange(bridge.n_spans + 1)
-    inside = profile.x[(profile.x > profile.start) & (profile.x < stop)]
-    points = np.union1d(np.concatenate(([profile.start], inside, supports)), [stop])
-    points = points[points <= stop]
-    gaps = np.diff(points)
-    keep = np.concatenate(([True], gaps > 1e-12 * max(1.0, abs(stop))))
-    points = points[keep]
-    gaps = np.diff(points)
-    pieces = np.maximum(1, np.ceil(gaps / (speed * dt) - 1e-9)).astype(np.int64)
-    starts = np.repeat(points[:-1], pieces)
-    widths = np.repeat(gaps / pieces, pieces)
-    within = np.arange(pieces.sum()) - np.repeat(np.cumsum(pieces) - pieces, pieces)
-    x = np.append(starts + within * widths, points[-1])
-    elevation = np.interp(x, profile.x, profile.elevation)
-    middle = 0.5 * (x[:-1] + x[1:]) - bridge_start
-    span_of_step = np.zeros(x.size, dtype=np.int64)
-    span_of_step[:-1] = np.where(
-        (middle > 0) & (middle < bridge.length), np.floor(middle / bridge.span) + 1, 0
-    )
-    return Grid(x, elevation, span_of_step, float((widths.max() if widths.size else 0) / speed))
 
 
 # ---------------------------------------------------------------------------- kernel helpers
@@ -187,8 +194,11 @@ def hermite_min(a0, a1, d0, d1, h):
     disc = qb * qb - 4.0 * qa * qc
     if disc < 0.0:
         return best
+    # the roots without cancellation (qa may be rounding noise: the textbook formula then
+    # loses the root inside the step): q = -(qb + sign(qb) sqrt(disc)) / 2, t = q/qa, qc/q
     root = math.sqrt(disc)
-    for t in ((-qb - root) / (2.0 * qa), (-qb + root) / (2.0 * qa)):
+    q = -0.5 * (qb + root) if qb >= 0.0 else -0.5 * (qb - root)
+    for t in (q / qa, qc / q if q != 0.0 else -1.0):
         if 0.0 < t < 1.0:
             best = min(best, ((c3 * t + c2) * t + c1) * t + a0)
     return best
@@ -296,7 +306,47 @@ class CrossingModel:
         """
         raise NotImplementedError
 
+    # ------------------------------------------------------------------ batches
     @classmethod
-    def integrate_many(cls, models: list[CrossingModel], grids: list[Grid]) -> np.ndarray:
-        """Summaries ``(n, SUMMARY_SIZE)`` of many crossings, no histories kept."""
-        raise NotImplementedError
+    def check_modes(cls, modes: object) -> int:
+        """The ``modes`` option checked; 0 for a model that takes none (``modes=None``)."""
+        if modes is not None:
+            raise ValueError(f"modes={modes!r}: model={cls.name!r} takes no modes option")
+        return 0
+
+    @classmethod
+    def one_of(cls, batch: Batch, i: int) -> CrossingModel:
+        """The model of crossing ``i`` of a batch."""
+        bridge, vehicle, _, speed, start, options = batch.crossing(i)
+        return cls(bridge, vehicle, speed, start, **options)
+
+    @classmethod
+    def default_time_steps(cls, batch: Batch) -> np.ndarray:
+        """Largest default step of each crossing of a batch [s], ``(n,)``.
+
+        This fallback asks one crossing at a time; models override it with array code.
+        """
+        return np.array([cls.one_of(batch, i).default_time_step()[0] for i in range(len(batch))])
+
+    @classmethod
+    def static_deflections(cls, batch: Batch) -> np.ndarray:
+        """The static deflection each crossing's DAF divides by [m], ``(n,)`` (fallback: a loop)."""
+        return np.array([cls.one_of(batch, i).static_deflection() for i in range(len(batch))])
+
+    @classmethod
+    def integrate_many(cls, batch: Batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Summaries ``(n, SUMMARY_SIZE)`` and largest steps ``(n,)`` [s] of a batch.
+
+        ``dt`` is each crossing's largest step [s].  This fallback runs one crossing at a time
+        through :meth:`integrate` (any vehicle the model's kernel takes); models override it
+        with their lane kernels.
+        """
+        n = len(batch)
+        summaries = np.empty((n, SUMMARY_SIZE))
+        steps = np.empty(n)
+        for i in range(n):
+            bridge, _, road, speed, start, _ = batch.crossing(i)
+            grid = node_grid(bridge, road, speed, start, float(dt[i]), start + bridge.length)
+            summaries[i] = cls.one_of(batch, i).integrate(grid)[0]
+            steps[i] = grid.dt_max
+        return summaries, steps

@@ -8,6 +8,7 @@ the result, the same way for every model.
 from __future__ import annotations
 
 import warnings
+from typing import Any
 
 import numpy as np
 
@@ -23,8 +24,8 @@ from .base import (
     S_MIN_FORCE,
     S_PEAK,
     S_TENSION_TIME,
+    Batch,
     CrossingModel,
-    broadcast,
     check_crossing,
     node_grid,
 )
@@ -50,6 +51,10 @@ def _model(model: object) -> type[CrossingModel]:
 
 def _contact(summary: np.ndarray, weight: float) -> tuple[float, float]:
     """Smallest contact force over the weight, and the fraction of the time in tension."""
+    if summary.ndim == 1:
+        bridge_time = summary[S_BRIDGE_TIME]
+        fraction = summary[S_TENSION_TIME] / bridge_time if bridge_time > 0 else 0.0
+        return summary[S_MIN_FORCE] / weight, fraction
     bridge_time = summary[..., S_BRIDGE_TIME]
     fraction = np.divide(
         summary[..., S_TENSION_TIME],
@@ -178,6 +183,119 @@ def simulate(
     )
 
 
+def _is_list(value: object) -> bool:
+    return isinstance(value, list | tuple | np.ndarray)
+
+
+def _factorize(values: object, n: int) -> tuple[np.ndarray, tuple]:
+    """Codes and the distinct objects (by identity) of a list, or of one repeated value."""
+    if not _is_list(values):
+        return np.zeros(n, np.int64), (values,)
+    codes = np.empty(n, np.int64)
+    seen: dict[int, int] = {}
+    distinct = []
+    for i, obj in enumerate(values):
+        code = seen.get(id(obj))
+        if code is None:
+            code = seen[id(obj)] = len(distinct)
+            distinct.append(obj)
+        codes[i] = code
+    return codes, tuple(distinct)
+
+
+def _numbers(values: object, n: int) -> np.ndarray:
+    """Floats of a list (or one repeated value); entries that are not numbers become NaN."""
+    if isinstance(values, np.ndarray) and values.dtype.kind in "fiu" and values.ndim == 1:
+        return values.astype(float)
+    items = values if _is_list(values) else [values]
+    out = np.full(len(items), np.nan)
+    for i, value in enumerate(items):
+        if isinstance(value, int | float | np.integer | np.floating) and not isinstance(
+            value, bool | np.bool_
+        ):
+            out[i] = value
+    return out if _is_list(values) else np.full(n, out[0])
+
+
+def _flags(name: str, values: object, n: int) -> np.ndarray:
+    if isinstance(values, np.ndarray) and values.dtype == np.bool_ and values.ndim == 1:
+        return values.copy()
+    if not _is_list(values):
+        return np.full(n, check.flag(name, values))
+    out = np.empty(n, dtype=bool)
+    for i, value in enumerate(values):
+        try:
+            out[i] = check.flag(name, value)
+        except TypeError as exc:
+            raise TypeError(f"crossing {i}: {exc}") from None
+    return out
+
+
+def _modes(kind: type[CrossingModel], values: object, n: int) -> np.ndarray:
+    if not _is_list(values):
+        return np.full(n, kind.check_modes(values), np.int64)
+    out = np.empty(n, np.int64)
+    for i, value in enumerate(values):
+        try:
+            out[i] = kind.check_modes(value)
+        except (TypeError, ValueError) as exc:
+            raise type(exc)(f"crossing {i}: {exc}") from None
+    return out
+
+
+def _one_crossing(args: dict[str, Any], i: int) -> tuple[float, float]:
+    """:func:`check_crossing` of crossing ``i``, its message prefixed with the crossing."""
+    values = [args[k][i] if _is_list(args[k]) else args[k]
+              for k in ("bridges", "vehicles", "profiles", "speeds", "bridge_starts")]  # fmt: skip
+    try:
+        return check_crossing(*values)
+    except (TypeError, ValueError) as exc:
+        raise type(exc)(f"crossing {i}: {exc}") from None
+
+
+def _batch(kind: type[CrossingModel], args: dict[str, Any]) -> Batch:
+    """Check the arguments of :func:`simulate_many` as arrays; errors name the crossing."""
+    lengths = {k: len(v) for k, v in args.items() if _is_list(v)}
+    if len(set(lengths.values())) > 1:
+        raise ValueError(f"list arguments must have one length; got {lengths}")
+    n = next(iter(lengths.values())) if lengths else 1
+    if n == 0:
+        raise ValueError("simulate_many needs at least one crossing; got empty lists")
+    b, bridges = _factorize(args["bridges"], n)
+    v, vehicles = _factorize(args["vehicles"], n)
+    p, profiles = _factorize(args["profiles"], n)
+    speed = _numbers(args["speeds"], n)
+    start = _numbers(args["bridge_starts"], n)
+    # where the arrays see a problem, one crossing's checks name it (or accept the value)
+    suspects = np.zeros(n, dtype=bool)
+    for codes, objects, kind_ in ((b, bridges, Bridge), (v, vehicles, Vehicle),
+                                  (p, profiles, Profile)):  # fmt: skip
+        wrong = [k for k, obj in enumerate(objects) if not isinstance(obj, kind_)]
+        suspects |= np.isin(codes, wrong)
+    suspects |= ~(np.isfinite(speed) & (speed > 0)) | ~np.isfinite(start)
+    for i in np.flatnonzero(suspects):
+        speed[i], start[i] = _one_crossing(args, int(i))
+    length = np.array([x.length for x in bridges])[b]
+    end = start + length
+    first = np.array([x.start for x in profiles])[p]
+    last = np.array([x.end for x in profiles])[p]
+    for i in np.flatnonzero((start < first) | (end > last + 1e-9 * np.maximum(1.0, np.abs(end)))):
+        _one_crossing(args, int(i))
+    return Batch(
+        bridges=bridges,
+        vehicles=vehicles,
+        profiles=profiles,
+        bridge=b,
+        vehicle=v,
+        profile=p,
+        speed=speed,
+        bridge_start=start,
+        coupled=_flags("coupled", args["coupled"], n),
+        convective=_flags("convective", args["convective"], n),
+        modes=_modes(kind, args["modes"], n),
+    )
+
+
 def simulate_many(
     bridges: Bridge | list[Bridge],
     vehicles: Vehicle | list[Vehicle],
@@ -195,11 +313,18 @@ def simulate_many(
 
     Every argument but ``model`` and ``dt`` is one value or a list; lists must share one
     length ``n`` and single values are repeated.  Results equal :func:`simulate` crossing by
-    crossing (no histories are kept).
+    crossing to rounding (no histories are kept): each model advances a block of crossings
+    together on the SIMD lanes of the CPU (:mod:`~vbi_lib.models.lanes`), the blocks shared
+    among numba's threads.
 
     Returns
     -------
     BatchResult
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`simulate`, the message starting with the crossing (``"crossing 3: ..."``).
 
     Warns
     -----
@@ -226,39 +351,14 @@ def simulate_many(
         "convective": convective,
         "modes": modes,
     }
-    n, expanded = broadcast(args, "simulate_many")
     if dt is not None:
         dt = check.positive("dt", dt)
-    setups, grids = [], []
-    cache: dict = {}
-    for i in range(n):
-        bridge = expanded["bridges"][i]
-        vehicle = expanded["vehicles"][i]
-        profile = expanded["profiles"][i]
-        try:
-            speed, start = check_crossing(
-                bridge, vehicle, profile, expanded["speeds"][i], expanded["bridge_starts"][i]
-            )
-            setup = kind(
-                bridge,
-                vehicle,
-                speed,
-                start,
-                coupled=check.flag("coupled", expanded["coupled"][i]),
-                convective=check.flag("convective", expanded["convective"][i]),
-                modes=expanded["modes"][i],
-            )
-        except (TypeError, ValueError) as exc:
-            raise type(exc)(f"crossing {i}: {exc}") from None
-        step = setup.default_time_step()[0] if dt is None else dt
-        key = (id(profile), bridge.span, bridge.n_spans, speed, start, step)
-        if key not in cache:
-            cache[key] = node_grid(bridge, profile, speed, start, step, start + bridge.length)
-        setups.append(setup)
-        grids.append(cache[key])
-    summaries = kind.integrate_many(setups, grids)
-    weights = np.array([s.vehicle.weight for s in setups])
-    statics = np.array([s.static_deflection() for s in setups])
+    batch = _batch(kind, args)
+    n = len(batch)
+    steps = kind.default_time_steps(batch) if dt is None else np.full(n, dt)
+    summaries, dt_max = kind.integrate_many(batch, steps)
+    statics = kind.static_deflections(batch)
+    weights = np.array([x.weight for x in batch.vehicles])[batch.vehicle]
     daf = summaries[:, S_PEAK : S_PEAK + 2] / statics[:, None]
     min_ratio, tension = _contact(summaries, weights)
     lost = int((min_ratio < 0).sum())
@@ -273,11 +373,11 @@ def simulate_many(
         )
     return BatchResult(
         model=kind.name,
-        speed=np.array([s.speed for s in setups]),
+        speed=batch.speed,
         daf=daf,
         contact_force_amplification=summaries[:, S_MAX_FORCE] / weights,
         peak_contact_position=summaries[:, S_MAX_AT],
         min_contact_force_ratio=min_ratio,
         tension_fraction=tension,
-        dt=np.array([g.dt_max for g in grids]),
+        dt=dt_max,
     )

@@ -40,6 +40,7 @@ largest downward midspan deflection while the wheel is on span ``j`` by it.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numba
 import numpy as np
@@ -57,6 +58,7 @@ from .base import (
     P_START,
     P_STIFFNESS,
     SUMMARY_SIZE,
+    Batch,
     CrossingModel,
     Grid,
     downward_peak,
@@ -65,6 +67,7 @@ from .base import (
     track_contact,
     track_peak,
 )
+from .lanes_modal import run as run_lanes
 from .results import Crossing
 
 
@@ -243,40 +246,6 @@ def _kernel(
         track_contact(summary, weight + force_b, x[n_nodes - 1], 0.0)
 
 
-@numba.njit(cache=True, parallel=True)
-def _batch_kernel(
-    offsets, x, elevation, span_of_step, params, mode_offsets, kind, kappa, amp, omega, zeta,
-    phi_mid, n_spans, coupled, convective, summaries,
-):  # fmt: skip
-    """Run many crossings in parallel; crossing i uses nodes ``offsets[i]:offsets[i+1]``."""
-    n_jobs = offsets.shape[0] - 1
-    for i in numba.prange(n_jobs):
-        a = offsets[i]
-        b = offsets[i + 1]
-        ma = mode_offsets[i]
-        mb = mode_offsets[i + 1]
-        dummy = np.empty((1, 1))
-        _kernel(
-            x[a:b],
-            elevation[a:b],
-            span_of_step[a:b],
-            params[i],
-            kind[ma:mb],
-            kappa[ma:mb],
-            amp[ma:mb],
-            omega[ma:mb],
-            zeta[ma:mb],
-            np.ascontiguousarray(phi_mid[i, : n_spans[i], : mb - ma]),
-            coupled[i],
-            convective[i],
-            dummy,
-            dummy,
-            np.empty((1, 2)),
-            np.empty(1),
-            summaries[i],
-        )
-
-
 # ---------------------------------------------------------------------------- model
 @dataclass(frozen=True, eq=False, kw_only=True, repr=False)
 class ModalCrossing(Crossing):
@@ -342,7 +311,11 @@ class Modal(CrossingModel):
         self.count = check_modes(modes)
         self.basis = beam_modes(bridge, self.count)
         self.params = parameters(vehicle, speed, bridge_start, bridge.span)
-        self.phi_mid = np.ascontiguousarray(self.basis.shape(np.array(bridge.midspans)))
+        self.phi_mid = midspan_shapes(bridge, self.count)
+
+    @classmethod
+    def check_modes(cls, modes: object) -> int:
+        return check_modes(modes)
 
     def default_time_step(self) -> tuple[float, str]:
         dt = default_time_step(self.bridge, self.vehicle, self.count)
@@ -350,6 +323,15 @@ class Modal(CrossingModel):
 
     def static_deflection(self) -> float:
         return max(largest_static_deflection(self.bridge, self.count)) * self.vehicle.weight
+
+    @classmethod
+    def default_time_steps(cls, batch: Batch) -> np.ndarray:
+        return _per_design(batch, lambda b, v, m: default_time_step(b, v, m))
+
+    @classmethod
+    def static_deflections(cls, batch: Batch) -> np.ndarray:
+        unit = _per_design(batch, lambda b, v, m: max(largest_static_deflection(b, m)))
+        return unit * np.array([x.weight for x in batch.vehicles])[batch.vehicle]
 
     def _zeta(self) -> np.ndarray:
         return np.full(self.count, self.bridge.damping_ratio)
@@ -377,31 +359,24 @@ class Modal(CrossingModel):
         return summary, contact, fields, note
 
     @classmethod
-    def integrate_many(cls, models, grids):  # noqa: ANN001, ANN206
-        n = len(models)
-        counts = [m.count for m in models]
-        offsets = np.zeros(n + 1, dtype=np.int64)
-        offsets[1:] = np.cumsum([g.x.size for g in grids])
-        phi_mid = np.full((n, 2, max(counts)), np.nan)
-        for i, m in enumerate(models):
-            phi_mid[i, : m.bridge.n_spans, : m.count] = m.phi_mid
-        summaries = np.full((n, SUMMARY_SIZE), np.nan)
-        _batch_kernel(
-            offsets,
-            np.concatenate([g.x for g in grids]),
-            np.concatenate([g.elevation for g in grids]),
-            np.concatenate([g.span_of_step for g in grids]),
-            np.array([m.params for m in models]),
-            np.concatenate(([0], np.cumsum(counts))).astype(np.int64),
-            np.concatenate([m.basis.kind for m in models]),
-            np.concatenate([m.basis.wavenumber for m in models]),
-            np.concatenate([m.basis.amplitude for m in models]),
-            np.concatenate([m.basis.omega for m in models]),
-            np.concatenate([m._zeta() for m in models]),
-            phi_mid,
-            np.array([m.bridge.n_spans for m in models], dtype=np.int64),
-            np.array([m.coupled for m in models], dtype=np.bool_),
-            np.array([m.convective for m in models], dtype=np.bool_),
-            summaries,
-        )
-        return summaries
+    def integrate_many(cls, batch: Batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Summaries and largest steps of a batch: the lane kernel for the study's vehicles."""
+        if batch.plain_vehicles():
+            return run_lanes(batch, dt)
+        return super().integrate_many(batch, dt)
+
+
+def _per_design(batch: Batch, function) -> np.ndarray:  # noqa: ANN001
+    """``function(bridge, vehicle, modes)`` once per distinct triple, spread to the crossings."""
+    first, inverse = batch.groups(batch.bridge, batch.vehicle, batch.modes)
+    values = np.array([function(batch.bridges[batch.bridge[i]], batch.vehicles[batch.vehicle[i]],
+                                int(batch.modes[i])) for i in first])  # fmt: skip
+    return values[inverse]
+
+
+@lru_cache(maxsize=512)
+def midspan_shapes(bridge: Bridge, count: int) -> np.ndarray:
+    """``phi_n`` at each midspan, ``(n_spans, count)`` (read-only, shared)."""
+    values = np.ascontiguousarray(beam_modes(bridge, count).shape(np.array(bridge.midspans)))
+    values.setflags(write=False)
+    return values

@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numba
 import numpy as np
@@ -53,6 +54,7 @@ from .base import (
     P_START,
     P_STIFFNESS,
     SUMMARY_SIZE,
+    Batch,
     CrossingModel,
     Grid,
     downward_peak,
@@ -61,6 +63,7 @@ from .base import (
     track_contact,
     track_peak,
 )
+from .lanes_one_coordinate import run as run_lanes
 from .results import Crossing
 
 # the model's entries of the parameter vector, after the shared ones
@@ -287,29 +290,53 @@ def _kernel(x, elevation, span_of_step, params, n_spans, coupled, convective, st
         track_contact(summary, force, x[k], 0.0)
 
 
-@numba.njit(cache=True, parallel=True)
-def _batch_kernel(offsets, x, elevation, span_of_step, params, n_spans, coupled, convective,
-                  summaries):  # fmt: skip
-    """Run many crossings in parallel; crossing i uses nodes ``offsets[i]:offsets[i+1]``."""
-    n_jobs = offsets.shape[0] - 1
-    for i in numba.prange(n_jobs):
-        a = offsets[i]
-        b = offsets[i + 1]
-        _kernel(x[a:b], elevation[a:b], span_of_step[a:b], params[i], n_spans[i], coupled[i],
-                convective[i], np.empty((1, 4)), np.empty(1), summaries[i])  # fmt: skip
-
-
 # ---------------------------------------------------------------------------- model
+@numba.njit(cache=True)
+def _omega_max(params, coupled, convective):
+    """Largest eigenvalue modulus of ``A`` at five wheel positions (psi = 0, 1/4, ..., 1)."""
+    A = np.empty((4, 4))
+    B = np.empty((4, 2))
+    f = np.empty(4)
+    largest = 0.0
+    for i in range(5):
+        psi = i / 4.0
+        dpsi = math.pi / params[P_SPAN] * math.sqrt(max(0.0, 1.0 - psi**2))
+        _fill_state_matrices(A, B, f, psi, dpsi, params, coupled, convective)
+        # complex input: numba's eigvals refuses a real matrix with complex eigenvalues
+        largest = max(largest, np.abs(np.linalg.eigvals(A.astype(np.complex128))).max())
+    return largest
+
+
+@numba.njit(cache=True, parallel=True)
+def _omega_max_many(params, coupled, convective, out):
+    for i in numba.prange(out.shape[0]):
+        out[i] = _omega_max(params[i], coupled[i], convective[i])
+
+
+def _speed_matters(vehicle: Vehicle, coupled: bool, convective: bool) -> bool:
+    """Whether ``A`` depends on the speed: only through the damper's convective term."""
+    return coupled and convective and vehicle.damping != 0.0
+
+
+@lru_cache(maxsize=4096)
+def _cached_omega_max(
+    bridge: Bridge, vehicle: Vehicle, speed: float, coupled: bool, convective: bool
+) -> float:
+    return float(_omega_max(_parameters(bridge, vehicle, speed, 0.0), coupled, convective))
+
+
 def highest_circular_frequency(
     bridge: Bridge, vehicle: Vehicle, speed: float, coupled: bool = True, convective: bool = True
 ) -> float:
-    """Largest eigenvalue modulus of ``A`` over the wheel positions [rad/s]."""
-    largest = 0.0
-    for psi in np.linspace(0.0, 1.0, 5):
-        dpsi = math.pi / bridge.span * math.sqrt(max(0.0, 1.0 - psi**2))
-        A, _, _ = state_matrices(bridge, vehicle, speed, psi, dpsi, coupled, convective)
-        largest = max(largest, float(np.abs(np.linalg.eigvals(A)).max()))
-    return largest
+    """Largest eigenvalue modulus of ``A`` over the wheel positions [rad/s].
+
+    Taken at ``psi = 0, 1/4, 1/2, 3/4, 1`` (with the slope ``psi'`` of the half sine there);
+    compiled, and remembered for each bridge, vehicle and options (and speed, when the
+    damper's convective term makes ``A`` depend on it).
+    """
+    if not _speed_matters(vehicle, coupled, convective):
+        speed = 0.0  # A is the same at every speed: one entry serves them all
+    return _cached_omega_max(bridge, vehicle, float(speed), bool(coupled), bool(convective))
 
 
 def default_time_step(
@@ -319,6 +346,31 @@ def default_time_step(
     return DEFAULT_OMEGA_DT / highest_circular_frequency(
         bridge, vehicle, speed, coupled, convective
     )
+
+
+def default_time_steps(batch: Batch) -> np.ndarray:
+    """:func:`default_time_step` of every crossing of a batch [s], ``(n,)``.
+
+    ``A`` is built and its eigenvalues found once per distinct bridge, vehicle, options and
+    (where it matters) speed: through the cache of :func:`highest_circular_frequency` for a
+    few, in compiled code on numba's threads for many.
+    """
+    damped = np.array([x.damping != 0.0 for x in batch.vehicles])[batch.vehicle]
+    speed = np.where(batch.coupled & batch.convective & damped, batch.speed, 0.0)
+    first, inverse = batch.groups(batch.bridge, batch.vehicle, batch.coupled,
+                                  batch.convective, speed)  # fmt: skip
+    bridges = [batch.bridges[k] for k in batch.bridge[first]]
+    vehicles = [batch.vehicles[k] for k in batch.vehicle[first]]
+    rows = list(zip(bridges, vehicles, speed[first], strict=True))
+    coupled, convective = batch.coupled[first], batch.convective[first]
+    if first.size <= 64:
+        omega = np.array([highest_circular_frequency(b, v, s, c, e) for (b, v, s), c, e
+                          in zip(rows, coupled, convective, strict=True)])  # fmt: skip
+    else:
+        params = np.array([_parameters(b, v, s, 0.0) for b, v, s in rows])
+        omega = np.empty(first.size)
+        _omega_max_many(params, coupled, convective, omega)
+    return DEFAULT_OMEGA_DT / omega[inverse]
 
 
 @dataclass(frozen=True, eq=False, kw_only=True, repr=False)
@@ -343,14 +395,19 @@ class OneCoordinate(CrossingModel):
     result_type = OneCoordinateCrossing
 
     def __init__(self, bridge, vehicle, speed, bridge_start, *, coupled, convective, modes):  # noqa: ANN001
+        self.check_modes(modes)
+        super().__init__(bridge, vehicle, speed, bridge_start, coupled=coupled,
+                         convective=convective, modes=modes)  # fmt: skip
+        self.params = _parameters(bridge, vehicle, speed, bridge_start)
+
+    @classmethod
+    def check_modes(cls, modes: object) -> int:
         if modes is not None:
             raise ValueError(
                 f"modes={modes!r} applies to model='modal'; the one-coordinate model bends the "
                 "beam in one shape (pass model='modal', modes=N for N beam modes)"
             )
-        super().__init__(bridge, vehicle, speed, bridge_start, coupled=coupled,
-                         convective=convective, modes=modes)  # fmt: skip
-        self.params = _parameters(bridge, vehicle, speed, bridge_start)
+        return 0
 
     def default_time_step(self) -> tuple[float, str]:
         dt = default_time_step(self.bridge, self.vehicle, self.speed, self.coupled, self.convective)
@@ -381,20 +438,17 @@ class OneCoordinate(CrossingModel):
         return summary, contact, fields, note
 
     @classmethod
-    def integrate_many(cls, models, grids):  # noqa: ANN001, ANN206
-        n = len(models)
-        offsets = np.zeros(n + 1, dtype=np.int64)
-        offsets[1:] = np.cumsum([g.x.size for g in grids])
-        summaries = np.full((n, SUMMARY_SIZE), np.nan)
-        _batch_kernel(
-            offsets,
-            np.concatenate([g.x for g in grids]),
-            np.concatenate([g.elevation for g in grids]),
-            np.concatenate([g.span_of_step for g in grids]),
-            np.array([m.params for m in models]),
-            np.array([m.bridge.n_spans for m in models], dtype=np.int64),
-            np.array([m.coupled for m in models], dtype=np.bool_),
-            np.array([m.convective for m in models], dtype=np.bool_),
-            summaries,
-        )
-        return summaries
+    def default_time_steps(cls, batch: Batch) -> np.ndarray:
+        return default_time_steps(batch)
+
+    @classmethod
+    def static_deflections(cls, batch: Batch) -> np.ndarray:
+        weight = np.array([x.weight for x in batch.vehicles])[batch.vehicle]
+        return weight / batch.column("bridges", "generalized_stiffness")
+
+    @classmethod
+    def integrate_many(cls, batch: Batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Summaries and largest steps of a batch: the lane kernel for the study's vehicles."""
+        if batch.plain_vehicles():
+            return run_lanes(batch, dt)
+        return super().integrate_many(batch, dt)
