@@ -58,46 +58,48 @@ K_COUNT = 11
  Z_SUMMARY) = range(21)  # fmt: skip
 Z_COUNT = Z_SUMMARY + SUMMARY_SIZE + P_COUNT
 # y: per-mode values, mode-major
-Y, V, YT, VT, R, INV_DD, G = range(7)
-Y_COUNT = 7
+Y, V, YT, VT, R, INV_DD = range(6)
+Y_COUNT = 6
 # nodes: station, elevation, step active, as (rows, LANES) blocks
 N_X, N_E, N_ACTIVE = range(3)
 
 
+# index helpers: unsigned, so that numba adds no wraparound test for negative indices
+# (which would stop the compiler from seeing that consecutive lanes are consecutive)
 @numba.njit(cache=True, inline="always")
 def _k(row, lane):
-    return row * LANES + lane
+    return np.uint64(row * LANES + lane)
 
 
 @numba.njit(cache=True, inline="always")
 def _m(n, field, lane):
     """Index of a per-mode constant in ``const``."""
-    return (K_COUNT + n * M_COUNT + field) * LANES + lane
+    return np.uint64((K_COUNT + n * M_COUNT + field) * LANES + lane)
 
 
 @numba.njit(cache=True, inline="always")
 def _y(n, field, lane):
-    return (n * Y_COUNT + field) * LANES + lane
+    return np.uint64((n * Y_COUNT + field) * LANES + lane)
 
 
 @numba.njit(cache=True, inline="always")
 def _node(field, rows, r, lane):
-    return (field * rows + r) * LANES + lane
+    return np.uint64((field * rows + r) * LANES + lane)
 
 
 @numba.njit(cache=True, inline="always")
 def _shape(n_modes, r, n, which, lane):
     """Index of ``phi`` (``which`` 0) or ``dphi`` (1) of mode ``n`` at node ``r``."""
-    return ((r * n_modes + n) * 2 + which) * LANES + lane
+    return np.uint64(((r * n_modes + n) * 2 + which) * LANES + lane)
 
 
 @numba.njit(cache=True, error_model="numpy")
 def _shapes(nodes, shapes, rows, kinds, const):
     """Mode shapes and slopes at the chunk's nodes near the bridge, all lanes.
 
-    Rows with every lane more than a span away from the bridge are left alone (the steps
-    mask them); stations are clamped to one span beyond either end of the bridge, which
-    keeps the exponentials of the propped-cantilever modes finite.
+    Rows with every lane off the bridge are left alone (the steps mask them); stations are
+    clamped to one span beyond either end of the bridge, which keeps the exponentials of
+    the propped-cantilever modes finite on lanes off the bridge.
     """
     n_modes = kinds.shape[0]
     for r in range(rows):
@@ -105,7 +107,8 @@ def _shapes(nodes, shapes, rows, kinds, const):
         for lane in range(LANES):
             xi = nodes[_node(N_X, rows, r, lane)] - const[_k(K_START, lane)]
             span = const[_k(K_SPAN, lane)]
-            near = near or (xi > -span and xi < const[_k(K_LENGTH, lane)] + span)
+            margin = 1e-6 * span  # rounding of stations at the bridge's ends
+            near = near or (xi > -margin and xi < const[_k(K_LENGTH, lane)] + margin)
         if not near:
             continue
         for n in range(n_modes):
@@ -198,31 +201,28 @@ def _step(r, rows, nodes, shapes, const, y, z, n_modes):
         z[_k(Z_UV, lane)] = uv + h * vv + beta * av  # predictors
         z[_k(Z_VV, lane)] = vv + gamma * av
         z[_k(Z_SV, lane)] = kv * beta + cv * gamma
-    # ---- predictors of the modes
-    for n in range(n_modes):
-        for lane in range(LANES):
-            on = z[_k(Z_ON, lane)] > 0.0
-            pa = shapes[_shape(n_modes, r, n, 0, lane)] if on else 0.0
-            h = z[_k(Z_H, lane)]
-            q = y[_y(n, Y, lane)]
-            qd = y[_y(n, V, lane)]
-            acc = (-const[_m(n, M_TWO_ZW, lane)] * qd - const[_m(n, M_W2, lane)] * q
-                   - pa * (const[_k(K_WEIGHT, lane)] + z[_k(Z_FORCE, lane)]))  # fmt: skip
-            y[_y(n, YT, lane)] = q + h * qd + 0.25 * h * h * acc
-            y[_y(n, VT, lane)] = qd + 0.5 * h * acc
-    # ---- the implicit equations at the end of the step reduce to one for F
+    # ---- predictors of the modes, and the sums the end of the step needs
     for lane in range(LANES):
         z[_k(Z_UB, lane)] = 0.0
         z[_k(Z_UBD, lane)] = 0.0
     for n in range(n_modes):
         for lane in range(LANES):
             on = z[_k(Z_ON, lane)] > 0.0
+            pa = shapes[_shape(n_modes, r, n, 0, lane)] if on else 0.0
             pb = shapes[_shape(n_modes, r + 1, n, 0, lane)] if on else 0.0
             dpb = shapes[_shape(n_modes, r + 1, n, 1, lane)] if on else 0.0
-            qt = y[_y(n, YT, lane)]
-            eps_speed = const[_k(K_EPS_SPEED, lane)]
+            h = z[_k(Z_H, lane)]
+            q = y[_y(n, Y, lane)]
+            qd = y[_y(n, V, lane)]
+            acc = (-const[_m(n, M_TWO_ZW, lane)] * qd - const[_m(n, M_W2, lane)] * q
+                   - pa * (const[_k(K_WEIGHT, lane)] + z[_k(Z_FORCE, lane)]))  # fmt: skip
+            qt = q + h * qd + 0.25 * h * h * acc
+            qdt = qd + 0.5 * h * acc
+            y[_y(n, YT, lane)] = qt
+            y[_y(n, VT, lane)] = qdt
             z[_k(Z_UB, lane)] += pb * qt
-            z[_k(Z_UBD, lane)] += pb * y[_y(n, VT, lane)] + eps_speed * dpb * qt
+            z[_k(Z_UBD, lane)] += pb * qdt + const[_k(K_EPS_SPEED, lane)] * dpb * qt
+    # ---- the implicit equations at the end of the step reduce to one for F
     for lane in range(LANES):
         cpl = const[_k(K_CPL, lane)]
         kv = const[_k(K_KV, lane)]
@@ -244,19 +244,19 @@ def _step(r, rows, nodes, shapes, const, y, z, n_modes):
             beta = 0.25 * h * h
             two_zw = const[_m(n, M_TWO_ZW, lane)]
             w2 = const[_m(n, M_W2, lane)]
-            y[_y(n, INV_DD, lane)] = 1.0 / (1.0 + two_zw * 0.5 * h + w2 * beta)
-            y[_y(n, R, lane)] = (-two_zw * y[_y(n, VT, lane)] - w2 * y[_y(n, YT, lane)]
-                                 - pb * const[_k(K_WEIGHT, lane)])  # fmt: skip
-            y[_y(n, G, lane)] = const[_k(K_CPL, lane)] * (
+            inv_dd = 1.0 / (1.0 + two_zw * 0.5 * h + w2 * beta)
+            rr = (
+                -two_zw * y[_y(n, VT, lane)]
+                - w2 * y[_y(n, YT, lane)]
+                - pb * const[_k(K_WEIGHT, lane)]
+            )
+            g = const[_k(K_CPL, lane)] * (
                 z[_k(Z_SV, lane)] * pb + const[_k(K_CV_EPS_SPEED, lane)] * beta * dpb
             )
-    for n in range(n_modes):
-        for lane in range(LANES):
-            on = z[_k(Z_ON, lane)] > 0.0
-            pb = shapes[_shape(n_modes, r + 1, n, 0, lane)] if on else 0.0
-            g = y[_y(n, G, lane)] * y[_y(n, INV_DD, lane)]
-            z[_k(Z_DEN, lane)] += g * pb
-            z[_k(Z_NUM, lane)] += g * y[_y(n, R, lane)]
+            y[_y(n, INV_DD, lane)] = inv_dd
+            y[_y(n, R, lane)] = rr
+            z[_k(Z_DEN, lane)] += g * pb * inv_dd
+            z[_k(Z_NUM, lane)] += g * rr * inv_dd
     for lane in range(LANES):
         h = z[_k(Z_H, lane)]
         force = z[_k(Z_NUM, lane)] / z[_k(Z_DEN, lane)]
@@ -266,20 +266,21 @@ def _step(r, rows, nodes, shapes, const, y, z, n_modes):
         z[_k(Z_VV, lane)] += 0.5 * h * av
         z[_k(Z_MID_END, lane)] = 0.0
         z[_k(Z_MIDV_END, lane)] = 0.0
+    # ---- the modes at the end of the step, and the midspan of the step's span
     for n in range(n_modes):
         for lane in range(LANES):
             on = z[_k(Z_ON, lane)] > 0.0
             pb = shapes[_shape(n_modes, r + 1, n, 0, lane)] if on else 0.0
             h = z[_k(Z_H, lane)]
             acc = (y[_y(n, R, lane)] - pb * z[_k(Z_FORCE, lane)]) * y[_y(n, INV_DD, lane)]
-            y[_y(n, Y, lane)] = y[_y(n, YT, lane)] + 0.25 * h * h * acc
-            y[_y(n, V, lane)] = y[_y(n, VT, lane)] + 0.5 * h * acc
-    for n in range(n_modes):
-        for lane in range(LANES):
+            q = y[_y(n, YT, lane)] + 0.25 * h * h * acc
+            qd = y[_y(n, VT, lane)] + 0.5 * h * acc
+            y[_y(n, Y, lane)] = q
+            y[_y(n, V, lane)] = qd
             second = z[_k(Z_SPAN, lane)] == 1.0
             pm = const[_m(n, M_MID2, lane)] if second else const[_m(n, M_MID1, lane)]
-            z[_k(Z_MID_END, lane)] += pm * y[_y(n, Y, lane)]
-            z[_k(Z_MIDV_END, lane)] += pm * y[_y(n, V, lane)]
+            z[_k(Z_MID_END, lane)] += pm * q
+            z[_k(Z_MIDV_END, lane)] += pm * qd
     for lane in range(LANES):
         on = z[_k(Z_ON, lane)] > 0.0
         track_peak(z, Z_SUMMARY, lane, on, z[_k(Z_SPAN, lane)], z[_k(Z_MID, lane)],

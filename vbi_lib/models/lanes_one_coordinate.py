@@ -71,15 +71,15 @@ def _at(row, r, lane):
 def _shapes(buf, const):
     """``psi`` and ``dpsi/dx`` at the chunk's nodes and midpoints near the bridge, all lanes.
 
-    Rows where every lane is more than a span away from the bridge are left alone: the
-    steps mask the shape off the bridge.
+    Rows where every lane is off the bridge are left alone: the steps mask the shape there.
     """
     for r in range(NODES):
         near = False
         for lane in range(LANES):
             xi = buf[_at(B_X, r, lane)] - const[K_START * LANES + lane]
             span = const[K_SPAN * LANES + lane]
-            near = near or (xi > -span and xi < const[K_LENGTH * LANES + lane] + span)
+            margin = 1e-6 * span  # rounding of stations at the bridge's ends
+            near = near or (xi > -margin and xi < const[K_LENGTH * LANES + lane] + margin)
         if not near:
             continue
         for lane in range(LANES):
