@@ -1,0 +1,81 @@
+"""The compiled node grid against a construction written here with numpy (sets and interp)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import vbi_lib as vbi
+from vbi_lib.models.grid import MAX_NODES, node_grid
+
+
+def numpy_grid(bridge, profile, speed, bridge_start, dt, stop):  # noqa: ANN001, ANN201
+    """The grid's definition, with set operations: samples before ``stop``, supports, stop;
+    points closer than 1e-12 max(1, |stop|) to the point before them dropped; gaps longer
+    than ``speed * dt`` cut into equal steps; elevations from ``np.interp``."""
+    supports = bridge_start + bridge.span * np.arange(bridge.n_spans + 1)
+    inside = profile.x[(profile.x > profile.start) & (profile.x < stop)]
+    points = np.union1d(np.concatenate(([profile.start], inside, supports)), [stop])
+    points = points[points <= stop]
+    keep = np.concatenate(([True], np.diff(points) > 1e-12 * max(1.0, abs(stop))))
+    points = points[keep]
+    gaps = np.diff(points)
+    pieces = np.maximum(1, np.ceil(gaps / (speed * dt) - 1e-9)).astype(np.int64)
+    x = [a + j * (gap / count) for a, gap, count in zip(points[:-1], gaps, pieces, strict=True)
+         for j in range(count)]  # fmt: skip
+    x = np.array(x + [points[-1]])
+    middle = 0.5 * (x[:-1] + x[1:]) - bridge_start
+    span_of_step = np.zeros(x.size, dtype=np.int64)
+    inside_bridge = (middle > 0) & (middle < bridge.length)
+    span_of_step[:-1] = np.where(inside_bridge, np.floor(middle / bridge.span) + 1, 0)
+    dt_max = float((gaps / pieces).max() / speed)
+    return x, np.interp(x, profile.x, profile.elevation), span_of_step, dt_max
+
+
+def random_case(rng: np.random.Generator, trial: int):  # noqa: ANN201
+    n = int(rng.integers(3, 300))
+    x = np.cumsum(rng.uniform(0.01, 0.5, n))
+    if trial % 3 == 0:  # samples on a round grid: supports often fall on a sample
+        x = np.unique(np.round(x, 2))
+    x = x - x[0] + rng.uniform(-5.0, 5.0)
+    profile = vbi.Profile(x, rng.normal(0.0, 0.01, x.size))
+    n_spans = int(rng.integers(1, 3))
+    bridge = vbi.Bridge(rng.uniform(0.2, 0.45) * profile.length / n_spans, n_spans, 1e9, 1e3)
+    room = profile.length - bridge.length
+    start = profile.start + rng.uniform(0.0, room)
+    if trial % 5 == 0:  # the bridge starting on a sample
+        start = x[np.searchsorted(x, start)]
+    if trial % 7 == 0:  # a support a hair after a sample: dropped as a duplicate
+        start = x[np.searchsorted(x, start)] + 1e-13
+    speed = rng.uniform(1.0, 30.0)
+    dt = np.inf if trial % 4 == 0 else rng.uniform(1e-4, 0.05)
+    stop = start + bridge.length
+    if trial % 6 == 0:  # free vibration after the bridge
+        stop = min(profile.end, stop + rng.uniform(0.0, 5.0))
+    return bridge, profile, speed, start, dt, stop
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_compiled_grid_is_the_set_construction(seed: int) -> None:
+    rng = np.random.default_rng(seed)
+    checked = 0
+    for trial in range(60):
+        case = random_case(rng, trial)
+        if case[3] + case[0].length > case[1].end:
+            continue
+        checked += 1
+        x, elevation, span_of_step, dt_max = numpy_grid(*case)
+        grid = node_grid(*case)
+        np.testing.assert_array_equal(grid.x, x)
+        np.testing.assert_array_equal(grid.elevation, elevation)
+        np.testing.assert_array_equal(grid.span_of_step, span_of_step)
+        assert grid.dt_max == dt_max
+    assert checked > 50
+
+
+def test_a_step_that_would_need_too_many_nodes_is_refused() -> None:
+    bridge = vbi.Bridge(20.0, 1, 1e9, 1e3)
+    road = vbi.Profile.flat(30.0, 0.1)
+    with pytest.raises(ValueError, match=r"dt=1e-09 s gives about .* steps"):
+        node_grid(bridge, road, 10.0, 5.0, 1e-9, 25.0)
+    assert 30.0 / (10.0 * 1e-9) > MAX_NODES
