@@ -31,6 +31,7 @@ import math
 
 import numba
 import numpy as np
+from numba.typed import List
 
 from .base import (
     S_BRIDGE_TIME,
@@ -198,7 +199,9 @@ def finish(lanes, state, first, floats, summaries, widest):
 def start_walkers(lanes, px, pe, roads, table, x, e):
     """Each lane's walker at its first node (row 0 of ``x``, ``e``); unused lanes copy lane 0.
 
-    Returns the walkers' integer and float states and the lanes' supports.
+    ``px``, ``pe`` are typed lists of the batch's roads (stations, elevations) and
+    ``roads[i]`` the road of crossing ``i``.  Returns the walkers' integer and float states
+    and the lanes' supports.
     """
     ints = np.zeros((LANES, WALK_INTS), np.int64)
     floats = np.zeros((LANES, WALK_FLOATS))
@@ -208,13 +211,13 @@ def start_walkers(lanes, px, pe, roads, table, x, e):
         row = table[i]
         n_spans = np.int64(row[T_SPANS])
         supports[lane, : n_spans + 1] = supports_of(row[T_START], row[T_SPAN], n_spans)
-        lo, hi = roads[i, 0], roads[i, 1]
-        walk_start(px[lo:hi], supports[lane, : n_spans + 1], row[T_STOP], ints[lane],
-                   floats[lane])  # fmt: skip
-        x[0, lane] = px[lo]
-        e[0, lane] = pe[lo]
+        road_x = px[roads[i]]
+        road_e = pe[roads[i]]
+        walk_start(road_x, supports[lane, : n_spans + 1], row[T_STOP], ints[lane], floats[lane])
+        x[0, lane] = road_x[0]
+        e[0, lane] = road_e[0]
         if lanes[lane] >= 0:
-            walk(px[lo:hi], pe[lo:hi], supports[lane, : n_spans + 1], row[T_STOP], row[T_STEP],
+            walk(road_x, road_e, supports[lane, : n_spans + 1], row[T_STOP], row[T_STEP],
                  row[T_TOL], ints[lane], floats[lane], x, e, lane, 0, 1)  # fmt: skip
     return ints, floats, supports
 
@@ -233,8 +236,7 @@ def next_nodes(lanes, px, pe, roads, table, ints, floats, supports, x, e, active
         if i >= 0:
             row = table[i]
             n_spans = np.int64(row[T_SPANS])
-            lo, hi = roads[i, 0], roads[i, 1]
-            given = walk(px[lo:hi], pe[lo:hi], supports[lane, : n_spans + 1], row[T_STOP],
+            given = walk(px[roads[i]], pe[roads[i]], supports[lane, : n_spans + 1], row[T_STOP],
                          row[T_STEP], row[T_TOL], ints[lane], floats[lane], x, e, lane, 1,
                          steps + 1)  # fmt: skip
         for r in range(1 + given, steps + 1):
@@ -266,15 +268,12 @@ def plan_blocks(expected_steps: np.ndarray, groups: np.ndarray | None = None) ->
 
 
 def expected_steps(
-    profiles: list, profile: np.ndarray, stop: np.ndarray, step: np.ndarray
+    profiles: tuple, profile: np.ndarray, stop: np.ndarray, step: np.ndarray
 ) -> np.ndarray:
     """About how many steps each crossing's grid has: its samples, plus the length / step."""
-    samples = np.empty(stop.size)
-    for k, road in enumerate(profiles):
-        rows = np.flatnonzero(profile == k)
-        samples[rows] = np.searchsorted(road.x, stop[rows])
-    start = np.array([road.start for road in profiles])[profile]
-    return samples + (stop - start) / step
+    first = np.array([road.x[0] for road in profiles])[profile]
+    density = np.array([(road.x.size - 1) / (road.x[-1] - road.x[0]) for road in profiles])
+    return (stop - first) * (density[profile] + 1.0 / step)
 
 
 def shared_table(batch, dt: np.ndarray, columns: int) -> np.ndarray:  # noqa: ANN001
@@ -295,20 +294,21 @@ def shared_table(batch, dt: np.ndarray, columns: int) -> np.ndarray:  # noqa: AN
 def launch(kernel, batch, table: np.ndarray, groups: np.ndarray | None, *extra):  # noqa: ANN001, ANN002
     """Run a lane kernel over a batch; return the summaries and the largest steps [s].
 
-    ``kernel(blocks, px, pe, roads, table, *extra, summaries, widest)`` runs the blocks of
+    ``kernel(blocks, px, pe, roads, table, *extra, summaries, widest)`` (``px``, ``pe``:
+    typed lists of the roads, ``roads``: each crossing's road) runs the blocks of
     :func:`plan_blocks` (``prange``, one block handed out at a time since blocks differ in
     length) and fills, for each crossing, its summary row and the widest step of its grid [m].
     """
     n = len(batch)
-    offsets = np.zeros(len(batch.profiles) + 1, np.int64)
-    offsets[1:] = np.cumsum([road.x.size for road in batch.profiles])
-    px = np.concatenate([road.x for road in batch.profiles])
-    pe = np.concatenate([road.elevation for road in batch.profiles])
-    roads = np.stack((offsets[batch.profile], offsets[batch.profile + 1]), axis=1)
+    px, pe = List(), List()  # the roads as they are: no copy
+    for road in batch.profiles:
+        px.append(road.x)
+        pe.append(road.elevation)
     steps = expected_steps(batch.profiles, batch.profile, table[:, T_STOP], table[:, T_STEP])
     blocks = plan_blocks(steps, groups)
     summaries = np.full((n, SUMMARY_SIZE), np.nan)
     widest = np.zeros(n)
+    roads = batch.profile
     with numba.parallel_chunksize(1):
         kernel(blocks, px, pe, roads, table, *extra, summaries, widest)
     return summaries, widest / batch.speed

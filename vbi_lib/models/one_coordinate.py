@@ -291,26 +291,36 @@ def _kernel(x, elevation, span_of_step, params, n_spans, coupled, convective, st
 
 
 # ---------------------------------------------------------------------------- model
+#: Wheel positions where the default step looks at ``A``: ``psi = 0, 1/4, ..., 1``.
+STEP_POSITIONS = 5
+
+
 @numba.njit(cache=True)
-def _omega_max(params, coupled, convective):
-    """Largest eigenvalue modulus of ``A`` at five wheel positions (psi = 0, 1/4, ..., 1)."""
-    A = np.empty((4, 4))
+def _matrix_stack(params, coupled, convective):
+    """``A`` of each row of ``params`` at the :data:`STEP_POSITIONS`, ``(m, 5, 4, 4)``.
+
+    ``psi = i / 4`` with the slope of the half sine there, ``(pi/L) sqrt(1 - psi^2)``.
+    """
+    out = np.empty((params.shape[0], STEP_POSITIONS, 4, 4))
     B = np.empty((4, 2))
     f = np.empty(4)
-    largest = 0.0
-    for i in range(5):
-        psi = i / 4.0
-        dpsi = math.pi / params[P_SPAN] * math.sqrt(max(0.0, 1.0 - psi**2))
-        _fill_state_matrices(A, B, f, psi, dpsi, params, coupled, convective)
-        # complex input: numba's eigvals refuses a real matrix with complex eigenvalues
-        largest = max(largest, np.abs(np.linalg.eigvals(A.astype(np.complex128))).max())
-    return largest
+    for row in range(params.shape[0]):
+        for i in range(STEP_POSITIONS):
+            psi = i / (STEP_POSITIONS - 1.0)
+            dpsi = math.pi / params[row, P_SPAN] * math.sqrt(max(0.0, 1.0 - psi**2))
+            _fill_state_matrices(out[row, i], B, f, psi, dpsi, params[row], coupled[row],
+                                 convective[row])  # fmt: skip
+    return out
 
 
-@numba.njit(cache=True, parallel=True)
-def _omega_max_many(params, coupled, convective, out):
-    for i in numba.prange(out.shape[0]):
-        out[i] = _omega_max(params[i], coupled[i], convective[i])
+def _omega_max(params: np.ndarray, coupled: np.ndarray, convective: np.ndarray) -> np.ndarray:
+    """Largest eigenvalue modulus of ``A`` over the wheel positions, for each row [rad/s].
+
+    One LAPACK call per matrix through numpy's stacked ``eigvals``, for one crossing as for
+    a batch (so both get the same numbers).
+    """
+    stack = _matrix_stack(params, coupled, convective)
+    return np.abs(np.linalg.eigvals(stack)).max(axis=(1, 2))
 
 
 def _speed_matters(vehicle: Vehicle, coupled: bool, convective: bool) -> bool:
@@ -322,7 +332,8 @@ def _speed_matters(vehicle: Vehicle, coupled: bool, convective: bool) -> bool:
 def _cached_omega_max(
     bridge: Bridge, vehicle: Vehicle, speed: float, coupled: bool, convective: bool
 ) -> float:
-    return float(_omega_max(_parameters(bridge, vehicle, speed, 0.0), coupled, convective))
+    params = _parameters(bridge, vehicle, speed, 0.0)[None]
+    return float(_omega_max(params, np.array([coupled]), np.array([convective]))[0])
 
 
 def highest_circular_frequency(
@@ -353,7 +364,7 @@ def default_time_steps(batch: Batch) -> np.ndarray:
 
     ``A`` is built and its eigenvalues found once per distinct bridge, vehicle, options and
     (where it matters) speed: through the cache of :func:`highest_circular_frequency` for a
-    few, in compiled code on numba's threads for many.
+    few, in one stacked call for many.
     """
     damped = np.array([x.damping != 0.0 for x in batch.vehicles])[batch.vehicle]
     speed = np.where(batch.coupled & batch.convective & damped, batch.speed, 0.0)
@@ -368,8 +379,7 @@ def default_time_steps(batch: Batch) -> np.ndarray:
                           in zip(rows, coupled, convective, strict=True)])  # fmt: skip
     else:
         params = np.array([_parameters(b, v, s, 0.0) for b, v, s in rows])
-        omega = np.empty(first.size)
-        _omega_max_many(params, coupled, convective, omega)
+        omega = _omega_max(params, coupled, convective)
     return DEFAULT_OMEGA_DT / omega[inverse]
 
 
