@@ -18,7 +18,10 @@ advances :data:`LANES` crossings together, one time step at a time:
 * the peak refinement inside a step (three divisions and a square root) is needed only
   where a midspan rate changes sign: the step loop keeps the end values and marks those
   steps, and :func:`refine_peaks` refines them afterwards with the base module's code;
-* numba's ``prange`` shares the blocks among threads, one block at a time.
+* numba's ``prange`` shares the blocks among threads, one block at a time;
+* the arithmetic may fuse a multiply and an add (:data:`CONTRACT`): each lane goes through
+  the same packed code whatever block it is in, so a crossing's result does not depend on
+  the batch, the chunking or the number of threads.
 
 Results equal :func:`vbi_lib.simulate`'s to rounding (the tests hold them to 1e-10): the
 lanes evaluate the same equations on the same nodes with the same peak refinement and
@@ -49,10 +52,14 @@ from .grid import W_WIDEST, WALK_FLOATS, WALK_INTS, supports_of, walk, walk_star
 LANES = 16
 #: Steps taken from each crossing's grid walker at a time.
 CHUNK = 64
+#: Floating-point freedom of the lane loops: a * b + c may be one fused multiply-add (one
+#: rounding instead of two); nothing else (no reassociation, infinities and NaN kept).
+CONTRACT = {"contract"}
 
-# the first columns of every lane kernel's table of crossings (a model appends its own)
-T_STOP, T_STEP, T_TOL, T_START, T_SPAN, T_SPANS, T_SPEED = range(7)
-T_SHARED = 7
+# the first columns of every lane kernel's table of crossings (a model appends its own);
+# T_WALK: crossings of one class (>= 0) have the same grid, -1 a grid of their own
+T_STOP, T_STEP, T_TOL, T_START, T_SPAN, T_SPANS, T_SPEED, T_WALK = range(8)
+T_SHARED = 8
 
 # pi/2 in two parts: a 33-bit head (n * head is exact for n < 2**20) and the rest;
 # sin(fl(pi)) is pi - fl(pi) to double precision
@@ -64,7 +71,7 @@ SINE_TERMS = tuple((-1.0) ** k / math.factorial(2 * k + 1) for k in range(8, 0, 
 COSINE_TERMS = tuple((-1.0) ** k / math.factorial(2 * k) for k in range(8, 1, -1))
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
+@numba.njit(cache=True, inline="always", error_model="numpy", fastmath=CONTRACT)
 def sincos(theta):
     """``sin(theta), cos(theta)`` without branches, within about 1 ulp for ``|theta| < 1e6``.
 
@@ -184,14 +191,16 @@ def track_force(state, first, lane, on, force, x, h):
 
 
 @numba.njit(cache=True)
-def finish(lanes, state, first, floats, summaries, widest):
+def finish(lanes, state, first, walkers, summaries, widest):
     """Copy each used lane's summary and widest step [m] to the batch's outputs."""
+    floats, share = walkers[1], walkers[3]
     for lane in range(LANES):
         i = lanes[lane]
         if i >= 0:
             for k in range(SUMMARY_SIZE):
                 summaries[i, k] = state[(first + k) * LANES + lane]
-            widest[i] = floats[lane, W_WIDEST]
+            walker = share[lane] if share[lane] >= 0 else lane
+            widest[i] = floats[walker, W_WIDEST]
 
 
 # ---------------------------------------------------------------------------- grids
@@ -200,12 +209,20 @@ def start_walkers(lanes, px, pe, roads, table, x, e):
     """Each lane's walker at its first node (row 0 of ``x``, ``e``); unused lanes copy lane 0.
 
     ``px``, ``pe`` are typed lists of the batch's roads (stations, elevations) and
-    ``roads[i]`` the road of crossing ``i``.  Returns the walkers' integer and float states
-    and the lanes' supports.
+    ``roads[i]`` the road of crossing ``i``.  Returns the walkers' integer and float states,
+    the lanes' supports and, for each lane, the earlier lane of the same grid class whose
+    nodes it copies (``-1``: it walks its own grid).
     """
     ints = np.zeros((LANES, WALK_INTS), np.int64)
     floats = np.zeros((LANES, WALK_FLOATS))
     supports = np.zeros((LANES, 3))
+    share = np.full(LANES, -1, np.int64)
+    for lane in range(LANES):
+        if lanes[lane] >= 0 and table[lanes[lane], T_WALK] >= 0.0:
+            for other in range(lane):
+                if lanes[other] >= 0 and table[lanes[other], T_WALK] == table[lanes[lane], T_WALK]:
+                    share[lane] = other
+                    break
     for lane in range(LANES):
         i = lanes[lane] if lanes[lane] >= 0 else lanes[0]
         row = table[i]
@@ -219,32 +236,41 @@ def start_walkers(lanes, px, pe, roads, table, x, e):
         if lanes[lane] >= 0:
             walk(road_x, road_e, supports[lane, : n_spans + 1], row[T_STOP], row[T_STEP],
                  row[T_TOL], ints[lane], floats[lane], x, e, lane, 0, 1)  # fmt: skip
-    return ints, floats, supports
+    return ints, floats, supports, share
 
 
 @numba.njit(cache=True)
-def next_nodes(lanes, px, pe, roads, table, ints, floats, supports, x, e, active, steps):
+def next_nodes(lanes, px, pe, roads, table, walkers, x, e, active, steps):
     """Rows ``1..steps`` of ``x``, ``e`` from each lane's walker (row 0: the last node given).
 
-    A lane past its last node repeats it and ``active[r, lane]`` is 0 for its steps.
-    Returns whether any lane took a step.
+    ``walkers`` is what :func:`start_walkers` returned.
+    A lane of a grid class copies the nodes of the first lane of its class (``share``); a
+    lane past its last node repeats it and ``active[r, lane]`` is 0 for its steps.  Returns
+    whether any lane took a step.
     """
+    ints, floats, supports, share = walkers
     busy = False
+    given = np.zeros(LANES, np.int64)
     for lane in range(LANES):
-        given = 0
         i = lanes[lane]
-        if i >= 0:
+        if i >= 0 and share[lane] >= 0:
+            source = share[lane]
+            given[lane] = given[source]
+            for r in range(1, steps + 1):
+                x[r, lane] = x[r, source]
+                e[r, lane] = e[r, source]
+        elif i >= 0:
             row = table[i]
             n_spans = np.int64(row[T_SPANS])
-            given = walk(px[roads[i]], pe[roads[i]], supports[lane, : n_spans + 1], row[T_STOP],
-                         row[T_STEP], row[T_TOL], ints[lane], floats[lane], x, e, lane, 1,
-                         steps + 1)  # fmt: skip
-        for r in range(1 + given, steps + 1):
+            given[lane] = walk(px[roads[i]], pe[roads[i]], supports[lane, : n_spans + 1],
+                               row[T_STOP], row[T_STEP], row[T_TOL], ints[lane], floats[lane],
+                               x, e, lane, 1, steps + 1)  # fmt: skip
+        for r in range(1 + given[lane], steps + 1):
             x[r, lane] = x[r - 1, lane]
             e[r, lane] = e[r - 1, lane]
         for r in range(steps):
-            active[r, lane] = 1.0 if r < given else 0.0
-        busy = busy or given > 0
+            active[r, lane] = 1.0 if r < given[lane] else 0.0
+        busy = busy or given[lane] > 0
     return busy
 
 
@@ -288,6 +314,16 @@ def shared_table(batch, dt: np.ndarray, columns: int) -> np.ndarray:  # noqa: AN
     table[:, T_SPAN] = batch.column("bridges", "span")
     table[:, T_SPANS] = np.array([x.n_spans for x in bridges], dtype=float)[batch.bridge]
     table[:, T_SPEED] = batch.speed
+    # a grid whose every gap is no longer than the step has one piece per gap: crossings of
+    # one road, bridge position and stop then have the same nodes, whatever their steps
+    widest_gap = np.array([np.diff(road.x).max() for road in batch.profiles])[batch.profile]
+    one_piece = widest_gap + table[:, T_TOL] <= table[:, T_STEP]
+    table[:, T_WALK] = -1.0
+    if one_piece.any():
+        rows = np.flatnonzero(one_piece)
+        keys = (batch.profile, table[:, T_START], table[:, T_SPAN], table[:, T_SPANS], stop)
+        _, classes = batch.groups(*(key[rows] for key in keys))
+        table[rows, T_WALK] = classes
     return table
 
 
@@ -304,7 +340,8 @@ def launch(kernel, batch, table: np.ndarray, groups: np.ndarray | None, *extra):
     for road in batch.profiles:
         px.append(road.x)
         pe.append(road.elevation)
-    steps = expected_steps(batch.profiles, batch.profile, table[:, T_STOP], table[:, T_STEP])
+    step = np.where(table[:, T_WALK] >= 0, np.inf, table[:, T_STEP])  # one piece per gap
+    steps = expected_steps(batch.profiles, batch.profile, table[:, T_STOP], step)
     blocks = plan_blocks(steps, groups)
     summaries = np.full((n, SUMMARY_SIZE), np.nan)
     widest = np.zeros(n)

@@ -23,6 +23,7 @@ from ..units import g as GRAVITY
 from .base import SUMMARY_SIZE
 from .lanes import (
     CHUNK,
+    CONTRACT,
     LANES,
     P_COUNT,
     T_SHARED,
@@ -93,7 +94,7 @@ def _shape(n_modes, r, n, which, lane):
     return np.uint64(((r * n_modes + n) * 2 + which) * LANES + lane)
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", fastmath=CONTRACT)
 def _shapes(nodes, shapes, rows, kinds, const):
     """Mode shapes and slopes at the chunk's nodes near the bridge, all lanes.
 
@@ -142,7 +143,7 @@ def _shapes(nodes, shapes, rows, kinds, const):
                     shapes[_shape(n_modes, r, n, 1, lane)] = -slope if mirrored else slope
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", fastmath=CONTRACT)
 def _step(r, rows, nodes, shapes, const, y, z, n_modes):
     """One average-acceleration step ``r -> r + 1`` of every lane (see ``modal._kernel``)."""
     for lane in range(LANES):
@@ -328,13 +329,13 @@ def _block(lanes, px, pe, roads, table, kinds, counts, designs, summaries, wides
             for f in range(M_COUNT):
                 const[_m(n, f, lane)] = designs[design, f, n]
         start_summaries(z, Z_SUMMARY, np.int64(row[T_SPANS]), lane)
-    nodes = np.zeros(3 * rows * LANES)
-    shapes = np.zeros(rows * n_modes * 2 * LANES)
+    nodes = np.empty(3 * rows * LANES)
+    shapes = np.empty(rows * n_modes * 2 * LANES)  # rows off the bridge: masked, never read
     grid = nodes.reshape((3, rows, LANES))
-    ints, floats, supports = start_walkers(lanes, px, pe, roads, table, grid[N_X], grid[N_E])
+    walkers = start_walkers(lanes, px, pe, roads, table, grid[N_X], grid[N_E])
     for lane in range(LANES):
         z[_k(Z_UV, lane)] = grid[N_E, 0, lane]  # at rest in static equilibrium
-    while next_nodes(lanes, px, pe, roads, table, ints, floats, supports, grid[N_X], grid[N_E],
+    while next_nodes(lanes, px, pe, roads, table, walkers, grid[N_X], grid[N_E],
                      grid[N_ACTIVE], chunk):  # fmt: skip
         _shapes(nodes, shapes, rows, block_kinds, const)
         for r in range(chunk):
@@ -346,7 +347,7 @@ def _block(lanes, px, pe, roads, table, kinds, counts, designs, summaries, wides
         # the last node: the force at the end of the last step
         track_force(z, Z_SUMMARY, lane, z[_k(Z_LAST_ON, lane)] > 0.0,
                     z[_k(Z_LAST_FORCE, lane)], z[_k(Z_LAST_X, lane)], 0.0)  # fmt: skip
-    finish(lanes, z, Z_SUMMARY, floats, summaries, widest)
+    finish(lanes, z, Z_SUMMARY, walkers, summaries, widest)
 
 
 @numba.njit(cache=True, parallel=True)

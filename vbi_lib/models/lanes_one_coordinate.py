@@ -25,6 +25,7 @@ from ..units import g as GRAVITY
 from .base import SUMMARY_SIZE
 from .lanes import (
     CHUNK,
+    CONTRACT,
     LANES,
     P_COUNT,
     T_SHARED,
@@ -67,7 +68,7 @@ def _at(row, r, lane):
     return (row * NODES + r) * LANES + lane
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", fastmath=CONTRACT)
 def _shapes(buf, const):
     """``psi`` and ``dpsi/dx`` at the chunk's nodes and midpoints near the bridge, all lanes.
 
@@ -96,13 +97,13 @@ def _shapes(buf, const):
                 buf[_at(B_DPSI_MID, r, lane)] = wave * c
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
+@numba.njit(cache=True, inline="always", error_model="numpy", fastmath=CONTRACT)
 def _force(kv, cv, e, rate, u, ud, kz, cz, q, qd):
     """Suspension force ``F`` [N] (the contact force is ``m_v g + F``)."""
     return kv * (e - u) + cv * (rate - ud) + kz * q + cz * qd
 
 
-@numba.njit(cache=True, inline="always", error_model="numpy")
+@numba.njit(cache=True, inline="always", error_model="numpy", fastmath=CONTRACT)
 def _coupling(coupled, convective, kv, cv, cvv, psi, dpsi):
     """``kappa`` and ``gamma`` of the suspension force at a point."""
     rate_term = cvv * dpsi if convective else 0.0
@@ -111,7 +112,7 @@ def _coupling(coupled, convective, kv, cv, cvv, psi, dpsi):
     return kz, cz
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", fastmath=CONTRACT)
 def _steps(buf, const, state):
     """RK4 over the chunk's steps, every lane at once (no branch in the lane loop)."""
     for r in range(CHUNK):
@@ -206,7 +207,7 @@ def _steps(buf, const, state):
 def _block(lanes, px, pe, roads, table, summaries, widest):
     """Run the crossings ``lanes`` (``-1``: unused lane) to the end of their grids."""
     const = np.empty(K_COUNT * LANES)
-    buf = np.zeros(B_COUNT * NODES * LANES)
+    buf = np.empty(B_COUNT * NODES * LANES)  # shape rows off the bridge: masked, never read
     state = np.zeros(Z_COUNT * LANES)
     for lane in range(LANES):
         row = table[lanes[lane] if lanes[lane] >= 0 else lanes[0]]
@@ -228,10 +229,10 @@ def _block(lanes, px, pe, roads, table, summaries, widest):
         const[K_CONVECTIVE * LANES + lane] = row[T_CONVECTIVE]
         start_summaries(state, Z_SUMMARY, np.int64(row[T_SPANS]), lane)
     rows = buf.reshape((B_COUNT, NODES, LANES))
-    ints, floats, supports = start_walkers(lanes, px, pe, roads, table, rows[B_X], rows[B_E])
+    walkers = start_walkers(lanes, px, pe, roads, table, rows[B_X], rows[B_E])
     for lane in range(LANES):
         state[Z_U * LANES + lane] = rows[B_E, 0, lane]  # at rest in static equilibrium
-    while next_nodes(lanes, px, pe, roads, table, ints, floats, supports, rows[B_X], rows[B_E],
+    while next_nodes(lanes, px, pe, roads, table, walkers, rows[B_X], rows[B_E],
                      rows[B_ACTIVE], CHUNK):  # fmt: skip
         _shapes(buf, const)
         _steps(buf, const, state)
@@ -243,7 +244,7 @@ def _block(lanes, px, pe, roads, table, summaries, widest):
         on = state[Z_LAST_ON * LANES + lane] > 0.0
         force = state[Z_LAST_FORCE * LANES + lane]
         track_force(state, Z_SUMMARY, lane, on, force, state[Z_LAST_X * LANES + lane], 0.0)
-    finish(lanes, state, Z_SUMMARY, floats, summaries, widest)
+    finish(lanes, state, Z_SUMMARY, walkers, summaries, widest)
 
 
 @numba.njit(cache=True, parallel=True)

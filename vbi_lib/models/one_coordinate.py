@@ -296,31 +296,96 @@ STEP_POSITIONS = 5
 
 
 @numba.njit(cache=True)
-def _matrix_stack(params, coupled, convective):
-    """``A`` of each row of ``params`` at the :data:`STEP_POSITIONS`, ``(m, 5, 4, 4)``.
+def _quadratic_roots(a, b, c):
+    """Both roots of ``a x^2 + b x + c`` (complex), without cancellation."""
+    disc = complex(b * b - 4.0 * a * c)
+    root = np.sqrt(disc)
+    q = -0.5 * (b + root) if b >= 0.0 else -0.5 * (b - root)
+    if q == 0.0:
+        return 0j, 0j
+    return q / a, c / q
 
-    ``psi = i / 4`` with the slope of the half sine there, ``(pi/L) sqrt(1 - psi^2)``.
+
+@numba.njit(cache=True)
+def _largest_root_modulus(params, psi, dpsi, coupled, convective):
+    r"""Largest eigenvalue modulus of ``A`` at one wheel position.
+
+    The eigenvalues of ``A`` are the roots of :math:`\det(\lambda^2 M + \lambda C + K)`,
+    :math:`(m_v\lambda^2 + c_v\lambda + k_v)(m^*\lambda^2 + (c^* + \psi\gamma)\lambda
+    + k^* + \psi\kappa) - \psi(\gamma\lambda + \kappa)(c_v\lambda + k_v)`, found by
+    Aberth's simultaneous iteration from the roots of the two uncoupled factors; LAPACK
+    (through numba) if the iteration has not settled in 60 rounds.
     """
-    out = np.empty((params.shape[0], STEP_POSITIONS, 4, 4))
-    B = np.empty((4, 2))
-    f = np.empty(4)
+    m_v = params[P_MASS]
+    k_v = params[P_STIFFNESS]
+    c_v = params[P_DAMPING]
+    m_b = params[_M_B]
+    k_b = params[_K_B]
+    c_b = params[_C_B]
+    kz = 0.0
+    cz = 0.0
+    if coupled:
+        kz = k_v * psi + (c_v * params[P_SPEED] * dpsi if convective else 0.0)
+        cz = c_v * psi
+    b1 = c_b + psi * cz
+    b0 = k_b + psi * kz
+    lead = m_v * m_b
+    coef = np.empty(5)  # monic quartic, highest power first
+    coef[0] = 1.0
+    coef[1] = (m_v * b1 + c_v * m_b) / lead
+    coef[2] = (m_v * b0 + c_v * b1 + k_v * m_b - psi * cz * c_v) / lead
+    coef[3] = (c_v * b0 + k_v * b1 - psi * (cz * k_v + kz * c_v)) / lead
+    coef[4] = (k_v * b0 - psi * kz * k_v) / lead
+    z = np.empty(4, np.complex128)
+    z[0], z[1] = _quadratic_roots(m_v, c_v, k_v)
+    z[2], z[3] = _quadratic_roots(m_b, b1, b0)
+    scale = abs(coef[4]) ** 0.25 + 1e-300
+    for i in range(4):  # distinct starts (the uncoupled roots may coincide)
+        z[i] = z[i] * (1.0 + 1e-3 * (i + 1)) + 1e-3 * scale * complex(0.5 * i, 1.0)
+    settled = False
+    for _ in range(60):
+        largest_change = 0.0
+        for i in range(4):
+            p = complex(coef[0])
+            dp = 0j
+            for k in range(1, 5):
+                dp = dp * z[i] + p
+                p = p * z[i] + coef[k]
+            ratio = p / dp if dp != 0 else 0j
+            pull = 0j
+            for j in range(4):
+                if j != i:
+                    pull += 1.0 / (z[i] - z[j])
+            change = ratio / (1.0 - ratio * pull)
+            z[i] -= change
+            largest_change = max(largest_change, abs(change) / (abs(z[i]) + 1e-300))
+        if largest_change < 1e-15:
+            settled = True
+            break
+    if settled and np.isfinite(z).all():
+        return np.abs(z).max()
+    A = np.empty((4, 4))
+    _fill_state_matrices(A, np.empty((4, 2)), np.empty(4), psi, dpsi, params, coupled,
+                         convective)  # fmt: skip
+    return np.abs(np.linalg.eigvals(A.astype(np.complex128))).max()
+
+
+@numba.njit(cache=True)
+def _omega_max(params, coupled, convective):
+    """Largest eigenvalue modulus of ``A`` over the wheel positions, for each row [rad/s].
+
+    ``psi = i / 4`` (i = 0..4) with the slope of the half sine there,
+    ``(pi/L) sqrt(1 - psi^2)``; one function for one crossing and for a batch.
+    """
+    out = np.zeros(params.shape[0])
     for row in range(params.shape[0]):
         for i in range(STEP_POSITIONS):
             psi = i / (STEP_POSITIONS - 1.0)
             dpsi = math.pi / params[row, P_SPAN] * math.sqrt(max(0.0, 1.0 - psi**2))
-            _fill_state_matrices(out[row, i], B, f, psi, dpsi, params[row], coupled[row],
-                                 convective[row])  # fmt: skip
+            modulus = _largest_root_modulus(params[row], psi, dpsi, coupled[row],
+                                            convective[row])  # fmt: skip
+            out[row] = max(out[row], modulus)
     return out
-
-
-def _omega_max(params: np.ndarray, coupled: np.ndarray, convective: np.ndarray) -> np.ndarray:
-    """Largest eigenvalue modulus of ``A`` over the wheel positions, for each row [rad/s].
-
-    One LAPACK call per matrix through numpy's stacked ``eigvals``, for one crossing as for
-    a batch (so both get the same numbers).
-    """
-    stack = _matrix_stack(params, coupled, convective)
-    return np.abs(np.linalg.eigvals(stack)).max(axis=(1, 2))
 
 
 def _speed_matters(vehicle: Vehicle, coupled: bool, convective: bool) -> bool:
@@ -364,7 +429,7 @@ def default_time_steps(batch: Batch) -> np.ndarray:
 
     ``A`` is built and its eigenvalues found once per distinct bridge, vehicle, options and
     (where it matters) speed: through the cache of :func:`highest_circular_frequency` for a
-    few, in one stacked call for many.
+    few, in one compiled call for many.
     """
     damped = np.array([x.damping != 0.0 for x in batch.vehicles])[batch.vehicle]
     speed = np.where(batch.coupled & batch.convective & damped, batch.speed, 0.0)
