@@ -243,3 +243,23 @@ def test_peak_inside_a_step_survives_a_vanishing_cubic_term() -> None:
     cubic = (2 * a0 + m0 - 2 * a1 + m1) * t**3 + (-3 * a0 - 2 * m0 + 3 * a1 - m1) * t**2
     dense = float((cubic + m0 * t + a0).min())
     assert base.downward_peak(a0, a1, v0, v1, h) == pytest.approx(-dense, rel=1e-13)
+
+
+@numba.njit
+def _exp_many(x, out):
+    bits = np.empty(x.size, np.int64)
+    parts = np.empty(x.size)
+    for i in range(x.size):
+        parts[i], n = lanes.exp_parts(x[i])
+        bits[i] = lanes.power_of_two_bits(n)
+    scales = bits.view(np.float64)
+    for i in range(x.size):
+        out[i] = parts[i] * scales[i]
+
+
+def test_branch_free_exp_is_within_an_ulp_or_two_of_the_c_library() -> None:
+    x = np.concatenate((np.random.default_rng(4).uniform(-700.0, 700.0, 20_000), [0.0, -1e-300]))
+    out = np.empty_like(x)
+    _exp_many(x, out)
+    np.testing.assert_allclose(out, [math.exp(v) for v in x], rtol=4.5e-16, atol=0)
+    assert abs(lanes.LN2_HEAD + lanes.LN2_TAIL - math.log(2.0)) < 1e-16

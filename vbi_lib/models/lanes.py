@@ -13,8 +13,9 @@ advances :data:`LANES` crossings together, one time step at a time:
   (:func:`~vbi_lib.models.grid.walk`, the code that builds :func:`vbi_lib.simulate`'s grid),
   and its own steps; a crossing that has finished idles behind a mask until its block is done,
   so crossings are sorted by their expected number of steps before they are cut into blocks;
-* sines and cosines of the shape functions come from :func:`sincos`, a branch-free
-  polynomial the compiler packs too (the C library's ``sin`` would be called once per lane);
+* sines, cosines and exponentials of the shape functions come from :func:`sincos` and
+  :func:`exp_parts`, branch-free polynomials the compiler packs too (the C library's
+  ``sin`` and ``exp`` would be called once per lane);
 * the peak refinement inside a step (three divisions and a square root) is needed only
   where a midspan rate changes sign: the step loop keeps the end values and marks those
   steps, and :func:`refine_peaks` refines them afterwards with the base module's code;
@@ -31,6 +32,7 @@ contact checks, in a different order of floating-point operations.
 from __future__ import annotations
 
 import math
+from decimal import Decimal
 
 import numba
 import numpy as np
@@ -97,6 +99,37 @@ def sincos(theta):
     sine = -sine if quadrant >= 2.0 else sine
     cosine = -cosine if (quadrant == 1.0) | (quadrant == 2.0) else cosine
     return sine, cosine
+
+
+# ln 2 in two parts (as pi/2 above); the tail from ln 2 to 36 digits
+LN2_HEAD = math.floor(math.log(2.0) * 2.0**32) / 2.0**32
+LN2_TAIL = float(Decimal("0.693147180559945309417232121458176568") - Decimal(LN2_HEAD))
+# Taylor coefficients of exp from the highest, 1/13! .. 1/0!
+EXP_TERMS = tuple(1.0 / math.factorial(k) for k in range(13, -1, -1))
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy", fastmath=CONTRACT)
+def exp_parts(x):
+    """``exp(x)`` as ``(p, n)`` with ``exp(x) = p * 2**n``, without branches.
+
+    ``x`` is clamped to [-708, 709] (the normal range); ``n = round(x / ln 2)``, and ``p`` is
+    the Taylor polynomial of the reduced argument (|r| <= ln 2 / 2, truncation below 1e-17).
+    The caller makes ``2**n`` from :func:`power_of_two_bits` in a separate loop, so that
+    both loops stay packed.
+    """
+    x = min(max(x, -708.0), 709.0)
+    n = np.floor(x * (1.0 / math.log(2.0)) + 0.5)
+    r = (x - n * LN2_HEAD) - n * LN2_TAIL
+    p = 0.0
+    for term in EXP_TERMS:
+        p = p * r + term
+    return p, n
+
+
+@numba.njit(cache=True, inline="always")
+def power_of_two_bits(n):
+    """The bits of the double ``2**n`` (``n`` a whole number in [-1022, 1023]) as an int64."""
+    return (np.int64(n) + 1023) << 52
 
 
 # ---------------------------------------------------------------------------- summaries

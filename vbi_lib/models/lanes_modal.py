@@ -31,9 +31,11 @@ from .lanes import (
     T_SPANS,
     T_SPEED,
     T_START,
+    exp_parts,
     finish,
     launch,
     next_nodes,
+    power_of_two_bits,
     refine_peaks,
     shared_table,
     sincos,
@@ -95,8 +97,11 @@ def _shape(n_modes, r, n, which, lane):
 
 
 @numba.njit(cache=True, error_model="numpy", fastmath=CONTRACT)
-def _shapes(nodes, shapes, rows, kinds, const):
+def _shapes(nodes, shapes, rows, kinds, const, scratch, bits, scales):
     """Mode shapes and slopes at the chunk's nodes near the bridge, all lanes.
+
+    ``scratch`` (2 LANES floats) and ``bits`` (2 LANES int64, seen as floats by ``scales``)
+    carry the exponentials of the propped-cantilever modes from one lane loop to the next.
 
     Rows with every lane off the bridge are left alone (the steps mask them); stations are
     clamped to one span beyond either end of the bridge, which keeps the exponentials of
@@ -122,6 +127,19 @@ def _shapes(nodes, shapes, rows, kinds, const):
                     shapes[_shape(n_modes, r, n, 0, lane)] = amp * s
                     shapes[_shape(n_modes, r, n, 1, lane)] = amp * k * c
             else:
+                # the two exponentials, packed: polynomial parts, then 2**n from its bits
+                for lane in range(LANES):
+                    k = const[_m(n, M_KAPPA, lane)]
+                    span = const[_k(K_SPAN, lane)]
+                    xi = nodes[_node(N_X, rows, r, lane)] - const[_k(K_START, lane)]
+                    xi = min(max(xi, -span), const[_k(K_LENGTH, lane)] + span)
+                    s = 2.0 * span - xi if xi > span else xi
+                    p1, n1 = exp_parts(k * (s - span))
+                    p2, n2 = exp_parts(-2.0 * k * s)
+                    scratch[lane] = p1
+                    scratch[LANES + lane] = p2
+                    bits[lane] = power_of_two_bits(n1)
+                    bits[LANES + lane] = power_of_two_bits(n2)
                 for lane in range(LANES):
                     k = const[_m(n, M_KAPPA, lane)]
                     span = const[_k(K_SPAN, lane)]
@@ -130,8 +148,8 @@ def _shapes(nodes, shapes, rows, kinds, const):
                     mirrored = xi > span
                     s = 2.0 * span - xi if mirrored else xi
                     # sinh(k s)/sinh(k L) and cosh(k s)/sinh(k L) without overflow
-                    e = math.exp(k * (s - span))
-                    e2 = math.exp(-2.0 * k * s)
+                    e = scratch[lane] * scales[lane]  # exp(k (s - L))
+                    e2 = scratch[LANES + lane] * scales[LANES + lane]  # exp(-2 k s)
                     d = const[_m(n, M_NORM, lane)]
                     shr = e * (1.0 - e2) / d
                     chr_ = e * (1.0 + e2) / d
@@ -329,6 +347,8 @@ def _block(lanes, px, pe, roads, table, kinds, counts, designs, summaries, wides
             for f in range(M_COUNT):
                 const[_m(n, f, lane)] = designs[design, f, n]
         start_summaries(z, Z_SUMMARY, np.int64(row[T_SPANS]), lane)
+    scratch = np.empty(2 * LANES)
+    bits = np.empty(2 * LANES, np.int64)
     nodes = np.empty(3 * rows * LANES)
     shapes = np.empty(rows * n_modes * 2 * LANES)  # rows off the bridge: masked, never read
     grid = nodes.reshape((3, rows, LANES))
@@ -337,7 +357,7 @@ def _block(lanes, px, pe, roads, table, kinds, counts, designs, summaries, wides
         z[_k(Z_UV, lane)] = grid[N_E, 0, lane]  # at rest in static equilibrium
     while next_nodes(lanes, px, pe, roads, table, walkers, grid[N_X], grid[N_E],
                      grid[N_ACTIVE], chunk):  # fmt: skip
-        _shapes(nodes, shapes, rows, block_kinds, const)
+        _shapes(nodes, shapes, rows, block_kinds, const, scratch, bits, bits.view(np.float64))
         for r in range(chunk):
             _step(r, rows, nodes, shapes, const, y, z, n_modes)
         for lane in range(LANES):
