@@ -10,6 +10,11 @@ and its default time step, and no model module imports another:
 * :mod:`~vbi_lib.models.modal`: ``"modal"``, N exact beam modes, Newmark average
   acceleration.
 
+Batches of crossings run on *lane kernels* (:mod:`~vbi_lib.models.lanes`,
+:mod:`~vbi_lib.models.lanes_one_coordinate`, :mod:`~vbi_lib.models.lanes_modal`): a block
+of crossings advances one step at a time on the CPU's SIMD lanes, each crossing over the
+grid :func:`vbi_lib.simulate` would build (:mod:`~vbi_lib.models.grid`).
+
 Results are :class:`~vbi_lib.models.results.Crossing` (a subclass per model) and
 :class:`~vbi_lib.models.results.BatchResult`.
 """
