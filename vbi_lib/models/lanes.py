@@ -36,7 +36,6 @@ from decimal import Decimal
 
 import numba
 import numpy as np
-from numba.typed import List
 
 from .base import (
     S_BRIDGE_TIME,
@@ -241,10 +240,10 @@ def finish(lanes, state, first, walkers, summaries, widest):
 def start_walkers(lanes, px, pe, roads, table, x, e):
     """Each lane's walker at its first node (row 0 of ``x``, ``e``); unused lanes copy lane 0.
 
-    ``px``, ``pe`` are typed lists of the batch's roads (stations, elevations) and
-    ``roads[i]`` the road of crossing ``i``.  Returns the walkers' integer and float states,
-    the lanes' supports and, for each lane, the earlier lane of the same grid class whose
-    nodes it copies (``-1``: it walks its own grid).
+    ``px``, ``pe`` are the batch's roads end to end (stations, elevations) and ``roads[i]``
+    the slice of crossing ``i``'s road.  Returns the walkers' integer and float states, the
+    lanes' supports and, for each lane, the earlier lane of the same grid class whose nodes
+    it copies (``-1``: it walks its own grid).
     """
     ints = np.zeros((LANES, WALK_INTS), np.int64)
     floats = np.zeros((LANES, WALK_FLOATS))
@@ -261,8 +260,8 @@ def start_walkers(lanes, px, pe, roads, table, x, e):
         row = table[i]
         n_spans = np.int64(row[T_SPANS])
         supports[lane, : n_spans + 1] = supports_of(row[T_START], row[T_SPAN], n_spans)
-        road_x = px[roads[i]]
-        road_e = pe[roads[i]]
+        road_x = px[roads[i, 0] : roads[i, 1]]
+        road_e = pe[roads[i, 0] : roads[i, 1]]
         walk_start(road_x, supports[lane, : n_spans + 1], row[T_STOP], ints[lane], floats[lane])
         x[0, lane] = road_x[0]
         e[0, lane] = road_e[0]
@@ -295,7 +294,8 @@ def next_nodes(lanes, px, pe, roads, table, walkers, x, e, active, steps):
         elif i >= 0:
             row = table[i]
             n_spans = np.int64(row[T_SPANS])
-            given[lane] = walk(px[roads[i]], pe[roads[i]], supports[lane, : n_spans + 1],
+            lo, hi = roads[i, 0], roads[i, 1]
+            given[lane] = walk(px[lo:hi], pe[lo:hi], supports[lane, : n_spans + 1],
                                row[T_STOP], row[T_STEP], row[T_TOL], ints[lane], floats[lane],
                                x, e, lane, 1, steps + 1)  # fmt: skip
         for r in range(1 + given[lane], steps + 1):
@@ -364,21 +364,21 @@ def launch(kernel, batch, table: np.ndarray, groups: np.ndarray | None, *extra):
     """Run a lane kernel over a batch; return the summaries and the largest steps [s].
 
     ``kernel(blocks, px, pe, roads, table, *extra, summaries, widest)`` (``px``, ``pe``:
-    typed lists of the roads, ``roads``: each crossing's road) runs the blocks of
+    the roads end to end, ``roads``: each crossing's slice of them) runs the blocks of
     :func:`plan_blocks` (``prange``, one block handed out at a time since blocks differ in
     length) and fills, for each crossing, its summary row and the widest step of its grid [m].
     """
     n = len(batch)
-    px, pe = List(), List()  # the roads as they are: no copy
-    for road in batch.profiles:
-        px.append(road.x)
-        pe.append(road.elevation)
+    offsets = np.zeros(len(batch.profiles) + 1, np.int64)
+    offsets[1:] = np.cumsum([road.x.size for road in batch.profiles])
+    px = np.concatenate([road.x for road in batch.profiles])
+    pe = np.concatenate([road.elevation for road in batch.profiles])
     step = np.where(table[:, T_WALK] >= 0, np.inf, table[:, T_STEP])  # one piece per gap
     steps = expected_steps(batch.profiles, batch.profile, table[:, T_STOP], step)
     blocks = plan_blocks(steps, groups)
     summaries = np.full((n, SUMMARY_SIZE), np.nan)
     widest = np.zeros(n)
-    roads = batch.profile
+    roads = np.stack((offsets[batch.profile], offsets[batch.profile + 1]), axis=1)
     with numba.parallel_chunksize(1):
         kernel(blocks, px, pe, roads, table, *extra, summaries, widest)
     return summaries, widest / batch.speed

@@ -49,8 +49,8 @@ from .lanes import (
 T_MV, T_KV, T_CV, T_MB, T_KB, T_CB, T_COUPLED, T_CONVECTIVE = range(T_SHARED, T_SHARED + 8)
 T_COUNT = T_SHARED + 8
 # rows of a block's lane constants
-(K_SPEED, K_START, K_SPAN, K_LENGTH, K_WAVE, K_KV, K_CV, K_CVV, K_INV_MV, K_KB, K_CB, K_INV_MB,
- K_WEIGHT, K_COUPLED, K_CONVECTIVE) = range(15)  # fmt: skip
+(K_SPEED, K_START, K_SPAN, K_LENGTH, K_WAVE, K_KV, K_CV, K_KV_COUPLED, K_CV_COUPLED,
+ K_CVV_CONVECTIVE, K_INV_MV, K_KB, K_CB, K_INV_MB, K_WEIGHT) = range(15)  # fmt: skip
 K_COUNT = 15
 # rows of a block's node buffer (CHUNK + 1 nodes: the chunk's steps and the node after)
 B_X, B_E, B_ACTIVE, B_PSI, B_DPSI, B_PSI_MID, B_DPSI_MID = range(7)
@@ -104,12 +104,10 @@ def _force(kv, cv, e, rate, u, ud, kz, cz, q, qd):
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy", fastmath=CONTRACT)
-def _coupling(coupled, convective, kv, cv, cvv, psi, dpsi):
-    """``kappa`` and ``gamma`` of the suspension force at a point."""
-    rate_term = cvv * dpsi if convective else 0.0
-    kz = kv * psi + rate_term if coupled else 0.0
-    cz = cv * psi if coupled else 0.0
-    return kz, cz
+def _coupling(const, lane, psi, dpsi):
+    """``kappa`` and ``gamma`` of the suspension force at a point (zero when decoupled)."""
+    kz = const[K_KV_COUPLED * LANES + lane] * psi + const[K_CVV_CONVECTIVE * LANES + lane] * dpsi
+    return kz, const[K_CV_COUPLED * LANES + lane] * psi
 
 
 @numba.njit(cache=True, error_model="numpy", fastmath=CONTRACT)
@@ -137,12 +135,9 @@ def _steps(buf, const, state):
             dpb = buf[_at(B_DPSI, r + 1, lane)] if on else 0.0
             kv = const[K_KV * LANES + lane]
             cv = const[K_CV * LANES + lane]
-            cvv = const[K_CVV * LANES + lane]
-            coupled = const[K_COUPLED * LANES + lane] > 0.0
-            convective = const[K_CONVECTIVE * LANES + lane] > 0.0
-            kza, cza = _coupling(coupled, convective, kv, cv, cvv, psa, dpa)
-            kzm, czm = _coupling(coupled, convective, kv, cv, cvv, psm, dpm)
-            kzb, czb = _coupling(coupled, convective, kv, cv, cvv, psb, dpb)
+            kza, cza = _coupling(const, lane, psa, dpa)
+            kzm, czm = _coupling(const, lane, psm, dpm)
+            kzb, czb = _coupling(const, lane, psb, dpb)
             kb = const[K_KB * LANES + lane]
             cb = const[K_CB * LANES + lane]
             inv_mv = const[K_INV_MV * LANES + lane]
@@ -219,14 +214,17 @@ def _block(lanes, px, pe, roads, table, summaries, widest):
         const[K_WAVE * LANES + lane] = math.pi / row[T_SPAN]
         const[K_KV * LANES + lane] = row[T_KV]
         const[K_CV * LANES + lane] = row[T_CV]
-        const[K_CVV * LANES + lane] = row[T_CV] * speed
+        # kappa = k_v psi + c_v v psi' and gamma = c_v psi, their factors zero when decoupled
+        coupled = 1.0 if row[T_COUPLED] > 0.0 else 0.0
+        convective = 1.0 if row[T_CONVECTIVE] > 0.0 else 0.0
+        const[K_KV_COUPLED * LANES + lane] = coupled * row[T_KV]
+        const[K_CV_COUPLED * LANES + lane] = coupled * row[T_CV]
+        const[K_CVV_CONVECTIVE * LANES + lane] = coupled * convective * (row[T_CV] * speed)
         const[K_INV_MV * LANES + lane] = 1.0 / row[T_MV]
         const[K_KB * LANES + lane] = row[T_KB]
         const[K_CB * LANES + lane] = row[T_CB]
         const[K_INV_MB * LANES + lane] = 1.0 / row[T_MB]
         const[K_WEIGHT * LANES + lane] = row[T_MV] * GRAVITY
-        const[K_COUPLED * LANES + lane] = row[T_COUPLED]
-        const[K_CONVECTIVE * LANES + lane] = row[T_CONVECTIVE]
         start_summaries(state, Z_SUMMARY, np.int64(row[T_SPANS]), lane)
     rows = buf.reshape((B_COUNT, NODES, LANES))
     walkers = start_walkers(lanes, px, pe, roads, table, rows[B_X], rows[B_E])

@@ -42,6 +42,7 @@ import numba
 import numpy as np
 
 from ..bridges import Bridge
+from ..units import g as GRAVITY
 from ..vehicles import Vehicle
 from .base import (
     DEFAULT_OMEGA_DT,
@@ -371,20 +372,35 @@ def _largest_root_modulus(params, psi, dpsi, coupled, convective):
 
 
 @numba.njit(cache=True)
-def _omega_max(params, coupled, convective):
-    """Largest eigenvalue modulus of ``A`` over the wheel positions, for each row [rad/s].
+def _omega_max_row(params, coupled, convective):
+    """Largest eigenvalue modulus of ``A`` over the wheel positions [rad/s].
 
     ``psi = i / 4`` (i = 0..4) with the slope of the half sine there,
-    ``(pi/L) sqrt(1 - psi^2)``; one function for one crossing and for a batch.
+    ``(pi/L) sqrt(1 - psi^2)``.
     """
-    out = np.zeros(params.shape[0])
+    largest = 0.0
+    for i in range(STEP_POSITIONS):
+        psi = i / (STEP_POSITIONS - 1.0)
+        dpsi = math.pi / params[P_SPAN] * math.sqrt(max(0.0, 1.0 - psi**2))
+        largest = max(largest, _largest_root_modulus(params, psi, dpsi, coupled, convective))
+    return largest
+
+
+@numba.njit(cache=True)
+def _omega_max(params, coupled, convective):
+    """:func:`_omega_max_row` of each row of ``params`` [rad/s] (one or a few crossings)."""
+    out = np.empty(params.shape[0])
     for row in range(params.shape[0]):
-        for i in range(STEP_POSITIONS):
-            psi = i / (STEP_POSITIONS - 1.0)
-            dpsi = math.pi / params[row, P_SPAN] * math.sqrt(max(0.0, 1.0 - psi**2))
-            modulus = _largest_root_modulus(params[row], psi, dpsi, coupled[row],
-                                            convective[row])  # fmt: skip
-            out[row] = max(out[row], modulus)
+        out[row] = _omega_max_row(params[row], coupled[row], convective[row])
+    return out
+
+
+@numba.njit(cache=True, parallel=True)
+def _omega_max_threads(params, coupled, convective):
+    """:func:`_omega_max` on numba's threads (many crossings; the same numbers)."""
+    out = np.empty(params.shape[0])
+    for row in numba.prange(params.shape[0]):
+        out[row] = _omega_max_row(params[row], coupled[row], convective[row])
     return out
 
 
@@ -424,12 +440,30 @@ def default_time_step(
     )
 
 
+def _parameter_rows(batch: Batch, rows: np.ndarray, speed: np.ndarray) -> np.ndarray:
+    """:func:`_parameters` of the crossings ``rows`` of a batch (at ``speed``), as arrays."""
+    out = np.zeros((rows.size, P_COUNT + 3))
+    for column, objects, name in (
+        (P_MASS, "vehicles", "mass"),
+        (P_STIFFNESS, "vehicles", "stiffness"),
+        (P_DAMPING, "vehicles", "damping"),
+        (P_SPAN, "bridges", "span"),
+        (_M_B, "bridges", "generalized_mass"),
+        (_K_B, "bridges", "generalized_stiffness"),
+        (_C_B, "bridges", "generalized_damping"),
+    ):
+        out[:, column] = batch.column(objects, name)[rows]
+    out[:, P_GRAVITY] = GRAVITY
+    out[:, P_SPEED] = speed
+    return out
+
+
 def default_time_steps(batch: Batch) -> np.ndarray:
     """:func:`default_time_step` of every crossing of a batch [s], ``(n,)``.
 
     ``A`` is built and its eigenvalues found once per distinct bridge, vehicle, options and
     (where it matters) speed: through the cache of :func:`highest_circular_frequency` for a
-    few, in one compiled call for many.
+    few, in compiled code on numba's threads for many.
     """
     damped = np.array([x.damping != 0.0 for x in batch.vehicles])[batch.vehicle]
     speed = np.where(batch.coupled & batch.convective & damped, batch.speed, 0.0)
@@ -443,8 +477,8 @@ def default_time_steps(batch: Batch) -> np.ndarray:
         omega = np.array([highest_circular_frequency(b, v, s, c, e) for (b, v, s), c, e
                           in zip(rows, coupled, convective, strict=True)])  # fmt: skip
     else:
-        params = np.array([_parameters(b, v, s, 0.0) for b, v, s in rows])
-        omega = _omega_max(params, coupled, convective)
+        omega = _omega_max_threads(_parameter_rows(batch, first, speed[first]), coupled,
+                                   convective)  # fmt: skip
     return DEFAULT_OMEGA_DT / omega[inverse]
 
 
