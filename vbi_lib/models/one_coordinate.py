@@ -42,7 +42,6 @@ import numba
 import numpy as np
 
 from ..bridges import Bridge
-from ..units import g as GRAVITY
 from ..vehicles import Vehicle
 from .base import (
     DEFAULT_OMEGA_DT,
@@ -65,6 +64,19 @@ from .base import (
     track_peak,
 )
 from .lanes_one_coordinate import run as run_lanes
+from .one_coordinate_step import (
+    C_CB,
+    C_CV,
+    C_KB,
+    C_KV,
+    C_MB,
+    C_MV,
+    C_SPAN,
+    C_SPEED,
+    COEFFICIENTS,
+    omega_max,
+    omega_max_threads,
+)
 from .results import Crossing
 
 # the model's entries of the parameter vector, after the shared ones
@@ -292,129 +304,21 @@ def _kernel(x, elevation, span_of_step, params, n_spans, coupled, convective, st
 
 
 # ---------------------------------------------------------------------------- model
-#: Wheel positions where the default step looks at ``A``: ``psi = 0, 1/4, ..., 1``.
-STEP_POSITIONS = 5
-
-
-@numba.njit(cache=True)
-def _quadratic_roots(a, b, c):
-    """Both roots of ``a x^2 + b x + c`` (complex), without cancellation."""
-    disc = complex(b * b - 4.0 * a * c)
-    root = np.sqrt(disc)
-    q = -0.5 * (b + root) if b >= 0.0 else -0.5 * (b - root)
-    if q == 0.0:
-        return 0j, 0j
-    return q / a, c / q
-
-
-@numba.njit(cache=True)
-def _largest_root_modulus(params, psi, dpsi, coupled, convective):
-    r"""Largest eigenvalue modulus of ``A`` at one wheel position.
-
-    The eigenvalues of ``A`` are the roots of :math:`\det(\lambda^2 M + \lambda C + K)`,
-    :math:`(m_v\lambda^2 + c_v\lambda + k_v)(m^*\lambda^2 + (c^* + \psi\gamma)\lambda
-    + k^* + \psi\kappa) - \psi(\gamma\lambda + \kappa)(c_v\lambda + k_v)`, found by
-    Aberth's simultaneous iteration from the roots of the two uncoupled factors; LAPACK
-    (through numba) if the iteration has not settled in 60 rounds.
-    """
-    m_v = params[P_MASS]
-    k_v = params[P_STIFFNESS]
-    c_v = params[P_DAMPING]
-    m_b = params[_M_B]
-    k_b = params[_K_B]
-    c_b = params[_C_B]
-    kz = 0.0
-    cz = 0.0
-    if coupled:
-        kz = k_v * psi + (c_v * params[P_SPEED] * dpsi if convective else 0.0)
-        cz = c_v * psi
-    b1 = c_b + psi * cz
-    b0 = k_b + psi * kz
-    lead = m_v * m_b
-    coef = np.empty(5)  # monic quartic, highest power first
-    coef[0] = 1.0
-    coef[1] = (m_v * b1 + c_v * m_b) / lead
-    coef[2] = (m_v * b0 + c_v * b1 + k_v * m_b - psi * cz * c_v) / lead
-    coef[3] = (c_v * b0 + k_v * b1 - psi * (cz * k_v + kz * c_v)) / lead
-    coef[4] = (k_v * b0 - psi * kz * k_v) / lead
-    z = np.empty(4, np.complex128)
-    z[0], z[1] = _quadratic_roots(m_v, c_v, k_v)
-    z[2], z[3] = _quadratic_roots(m_b, b1, b0)
-    scale = abs(coef[4]) ** 0.25 + 1e-300
-    for i in range(4):  # distinct starts (the uncoupled roots may coincide)
-        z[i] = z[i] * (1.0 + 1e-3 * (i + 1)) + 1e-3 * scale * complex(0.5 * i, 1.0)
-    settled = False
-    for _ in range(60):
-        largest_change = 0.0
-        for i in range(4):
-            p = complex(coef[0])
-            dp = 0j
-            for k in range(1, 5):
-                dp = dp * z[i] + p
-                p = p * z[i] + coef[k]
-            ratio = p / dp if dp != 0 else 0j
-            pull = 0j
-            for j in range(4):
-                if j != i:
-                    pull += 1.0 / (z[i] - z[j])
-            change = ratio / (1.0 - ratio * pull)
-            z[i] -= change
-            largest_change = max(largest_change, abs(change) / (abs(z[i]) + 1e-300))
-        if largest_change < 1e-15:
-            settled = True
-            break
-    if settled and np.isfinite(z).all():
-        return np.abs(z).max()
-    A = np.empty((4, 4))
-    _fill_state_matrices(A, np.empty((4, 2)), np.empty(4), psi, dpsi, params, coupled,
-                         convective)  # fmt: skip
-    return np.abs(np.linalg.eigvals(A.astype(np.complex128))).max()
-
-
-@numba.njit(cache=True)
-def _omega_max_row(params, coupled, convective):
-    """Largest eigenvalue modulus of ``A`` over the wheel positions [rad/s].
-
-    ``psi = i / 4`` (i = 0..4) with the slope of the half sine there,
-    ``(pi/L) sqrt(1 - psi^2)``.
-    """
-    largest = 0.0
-    for i in range(STEP_POSITIONS):
-        psi = i / (STEP_POSITIONS - 1.0)
-        dpsi = math.pi / params[P_SPAN] * math.sqrt(max(0.0, 1.0 - psi**2))
-        largest = max(largest, _largest_root_modulus(params, psi, dpsi, coupled, convective))
-    return largest
-
-
-@numba.njit(cache=True)
-def _omega_max(params, coupled, convective):
-    """:func:`_omega_max_row` of each row of ``params`` [rad/s] (one or a few crossings)."""
-    out = np.empty(params.shape[0])
-    for row in range(params.shape[0]):
-        out[row] = _omega_max_row(params[row], coupled[row], convective[row])
-    return out
-
-
-@numba.njit(cache=True, parallel=True)
-def _omega_max_threads(params, coupled, convective):
-    """:func:`_omega_max` on numba's threads (many crossings; the same numbers)."""
-    out = np.empty(params.shape[0])
-    for row in numba.prange(params.shape[0]):
-        out[row] = _omega_max_row(params[row], coupled[row], convective[row])
-    return out
-
-
 def _speed_matters(vehicle: Vehicle, coupled: bool, convective: bool) -> bool:
     """Whether ``A`` depends on the speed: only through the damper's convective term."""
     return coupled and convective and vehicle.damping != 0.0
+
+
+#: The parameter-vector entries the default step needs, in the order of ``C_*``.
+_STEP_COLUMNS = [P_MASS, P_STIFFNESS, P_DAMPING, _M_B, _K_B, _C_B, P_SPEED, P_SPAN]
 
 
 @lru_cache(maxsize=4096)
 def _cached_omega_max(
     bridge: Bridge, vehicle: Vehicle, speed: float, coupled: bool, convective: bool
 ) -> float:
-    params = _parameters(bridge, vehicle, speed, 0.0)[None]
-    return float(_omega_max(params, np.array([coupled]), np.array([convective]))[0])
+    rows = _parameters(bridge, vehicle, speed, 0.0)[None, _STEP_COLUMNS]
+    return float(omega_max(rows, np.array([coupled]), np.array([convective]))[0])
 
 
 def highest_circular_frequency(
@@ -440,21 +344,20 @@ def default_time_step(
     )
 
 
-def _parameter_rows(batch: Batch, rows: np.ndarray, speed: np.ndarray) -> np.ndarray:
-    """:func:`_parameters` of the crossings ``rows`` of a batch (at ``speed``), as arrays."""
-    out = np.zeros((rows.size, P_COUNT + 3))
+def _step_rows(batch: Batch, rows: np.ndarray, speed: np.ndarray) -> np.ndarray:
+    """The default step's coefficients (``C_*``) of the crossings ``rows`` at ``speed``."""
+    out = np.empty((rows.size, COEFFICIENTS))
     for column, objects, name in (
-        (P_MASS, "vehicles", "mass"),
-        (P_STIFFNESS, "vehicles", "stiffness"),
-        (P_DAMPING, "vehicles", "damping"),
-        (P_SPAN, "bridges", "span"),
-        (_M_B, "bridges", "generalized_mass"),
-        (_K_B, "bridges", "generalized_stiffness"),
-        (_C_B, "bridges", "generalized_damping"),
+        (C_MV, "vehicles", "mass"),
+        (C_KV, "vehicles", "stiffness"),
+        (C_CV, "vehicles", "damping"),
+        (C_MB, "bridges", "generalized_mass"),
+        (C_KB, "bridges", "generalized_stiffness"),
+        (C_CB, "bridges", "generalized_damping"),
+        (C_SPAN, "bridges", "span"),
     ):
         out[:, column] = batch.column(objects, name)[rows]
-    out[:, P_GRAVITY] = GRAVITY
-    out[:, P_SPEED] = speed
+    out[:, C_SPEED] = speed
     return out
 
 
@@ -477,8 +380,7 @@ def default_time_steps(batch: Batch) -> np.ndarray:
         omega = np.array([highest_circular_frequency(b, v, s, c, e) for (b, v, s), c, e
                           in zip(rows, coupled, convective, strict=True)])  # fmt: skip
     else:
-        omega = _omega_max_threads(_parameter_rows(batch, first, speed[first]), coupled,
-                                   convective)  # fmt: skip
+        omega = omega_max_threads(_step_rows(batch, first, speed[first]), coupled, convective)
     return DEFAULT_OMEGA_DT / omega[inverse]
 
 
