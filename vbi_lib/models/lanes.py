@@ -360,8 +360,16 @@ def shared_table(batch, dt: np.ndarray, columns: int) -> np.ndarray:  # noqa: AN
     return table
 
 
-def launch(kernel, batch, table: np.ndarray, groups: np.ndarray | None, *extra):  # noqa: ANN001, ANN002
+#: Batches of fewer blocks than this many per thread run without a parallel region: waking
+#: numba's threads costs more than it saves (milliseconds on a busy machine).
+BLOCKS_PER_THREAD = 2
+
+
+def launch(kernels, batch, table: np.ndarray, groups: np.ndarray | None, *extra):  # noqa: ANN001, ANN002
     """Run a lane kernel over a batch; return the summaries and the largest steps [s].
+
+    ``kernels`` is the kernel's ``(prange, serial)`` pair; the serial one runs batches of
+    fewer than :data:`BLOCKS_PER_THREAD` blocks per numba thread.
 
     ``kernel(blocks, px, pe, roads, table, *extra, summaries, widest)`` (``px``, ``pe``:
     the roads end to end, ``roads``: each crossing's slice of them) runs the blocks of
@@ -379,6 +387,10 @@ def launch(kernel, batch, table: np.ndarray, groups: np.ndarray | None, *extra):
     summaries = np.full((n, SUMMARY_SIZE), np.nan)
     widest = np.zeros(n)
     roads = np.stack((offsets[batch.profile], offsets[batch.profile + 1]), axis=1)
-    with numba.parallel_chunksize(1):
-        kernel(blocks, px, pe, roads, table, *extra, summaries, widest)
+    threaded, serial = kernels
+    if blocks.shape[0] < BLOCKS_PER_THREAD * numba.get_num_threads():
+        serial(blocks, px, pe, roads, table, *extra, summaries, widest)
+    else:
+        with numba.parallel_chunksize(1):
+            threaded(blocks, px, pe, roads, table, *extra, summaries, widest)
     return summaries, widest / batch.speed

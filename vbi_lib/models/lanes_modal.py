@@ -376,6 +376,12 @@ def _run(blocks, px, pe, roads, table, kinds, counts, designs, summaries, widest
         _block(blocks[b], px, pe, roads, table, kinds, counts, designs, summaries, widest)
 
 
+@numba.njit(cache=True)
+def _run_serial(blocks, px, pe, roads, table, kinds, counts, designs, summaries, widest):
+    for b in range(blocks.shape[0]):
+        _block(blocks[b], px, pe, roads, table, kinds, counts, designs, summaries, widest)
+
+
 def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
     """Summaries ``(n, SUMMARY_SIZE)`` and largest steps ``(n,)`` [s] of a batch.
 
@@ -415,4 +421,4 @@ def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
     # a block holds one number of spans and one number of modes (the same mode families)
     spans = np.array([x.n_spans for x in batch.bridges])[batch.bridge]
     groups = spans * (width + 1) + batch.modes
-    return launch(_run, batch, table, groups, kinds, counts, designs)
+    return launch((_run, _run_serial), batch, table, groups, kinds, counts, designs)

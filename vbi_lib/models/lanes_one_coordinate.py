@@ -251,6 +251,12 @@ def _run(blocks, px, pe, roads, table, summaries, widest):
         _block(blocks[b], px, pe, roads, table, summaries, widest)
 
 
+@numba.njit(cache=True)
+def _run_serial(blocks, px, pe, roads, table, summaries, widest):
+    for b in range(blocks.shape[0]):
+        _block(blocks[b], px, pe, roads, table, summaries, widest)
+
+
 def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
     """Summaries ``(n, SUMMARY_SIZE)`` and largest steps ``(n,)`` [s] of a batch.
 
@@ -266,4 +272,4 @@ def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
     table[:, T_CB] = batch.column("bridges", "generalized_damping")
     table[:, T_COUPLED] = batch.coupled
     table[:, T_CONVECTIVE] = batch.convective
-    return launch(_run, batch, table, None)
+    return launch((_run, _run_serial), batch, table, None)
