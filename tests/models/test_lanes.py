@@ -185,9 +185,9 @@ def test_one_and_two_threads_give_the_same_table() -> None:
 
 
 def test_default_steps_of_a_batch_are_each_crossings_own() -> None:
-    """Many distinct damped crossings take the compiled path; each equals the cached one."""
+    """Thousands of distinct damped crossings take the threaded path; each equals its own."""
     bridge, vehicle, road, speed, start = build_case("40ft-10Hz-one-span")
-    speeds = np.linspace(5.0, 30.0, 100)  # > 64 distinct rows: the threaded path
+    speeds = np.linspace(5.0, 30.0, 5000)  # > 4096 distinct rows: the threaded path
     steps = vbi.models.one_coordinate.default_time_steps(
         vbi.models.driver._batch(
             vbi.models.OneCoordinate,

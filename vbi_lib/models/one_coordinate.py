@@ -366,7 +366,7 @@ def default_time_steps(batch: Batch) -> np.ndarray:
 
     ``A`` is built and its eigenvalues found once per distinct bridge, vehicle, options and
     (where it matters) speed: through the cache of :func:`highest_circular_frequency` for a
-    few, in compiled code on numba's threads for many.
+    few, in compiled code for many (on numba's threads for thousands).
     """
     damped = np.array([x.damping != 0.0 for x in batch.vehicles])[batch.vehicle]
     speed = np.where(batch.coupled & batch.convective & damped, batch.speed, 0.0)
@@ -379,8 +379,9 @@ def default_time_steps(batch: Batch) -> np.ndarray:
     if first.size <= 64:
         omega = np.array([highest_circular_frequency(b, v, s, c, e) for (b, v, s), c, e
                           in zip(rows, coupled, convective, strict=True)])  # fmt: skip
-    else:
-        omega = omega_max_threads(_step_rows(batch, first, speed[first]), coupled, convective)
+    else:  # ~4 us a row: threads only when their wake-up (ms on a busy machine) is worth it
+        solve = omega_max_threads if first.size > 4096 else omega_max
+        omega = solve(_step_rows(batch, first, speed[first]), coupled, convective)
     return DEFAULT_OMEGA_DT / omega[inverse]
 
 
