@@ -7,7 +7,7 @@ bridge (``beam_modes`` is memoised), so the mode timing clears the cache on ever
 
 from __future__ import annotations
 
-from _timing import median_time
+from _timing import median_time, report
 
 import vbi_lib as vbi
 from vbi_lib import units as u
@@ -33,19 +33,32 @@ def modes(count: int) -> float:
 
 
 if __name__ == "__main__":
-    for count in (5, 20, 60):
-        print(f"exact modes of four unequal spans, {count:2d} modes: {modes(count) * 1e3:.1f} ms")
+    each = {count: modes(count) for count in (5, 20, 60)}
+    report(
+        "exact modes of four unequal spans (Wittrick-Williams), 5 / 20 / 60 modes",
+        "",
+        " / ".join(f"{seconds * 1e3:.1f}" for seconds in each.values()) + " ms",
+    )
+    crossing = {}
     for count in (5, 20):
-        seconds = median_time(
+        crossing[count] = median_time(
             lambda c=count: vbi.simulate(
                 BRIDGE, TRUCK, ROAD, 720 * u.inch, 100.0, model="modal", modes=c
             ),
             10,
         )
-        print(f"one crossing of four spans at 720 in/s, {count:2d} modes: {seconds * 1e3:.1f} ms")
+    report(
+        "one crossing of four unequal spans at 720 in/s, 5 / 20 modes",
+        "",
+        f"{crossing[5] * 1e3:.1f} / {crossing[20] * 1e3:.1f} ms",
+    )
     run = vbi.simulate(BRIDGE, TRUCK, ROAD, 720 * u.inch, 100.0, model="modal", modes=10)
-    seconds = median_time(lambda: run.sections(SECTIONS), 5)
-    print(f"sections (4 sections, 3 effects, static envelope) of that crossing: {seconds:.3f} s")
+    sections = median_time(lambda: run.sections(SECTIONS), 5)
     hs20 = ([8 * u.kip, 32 * u.kip, 32 * u.kip], [0.0, 14 * u.ft, 28 * u.ft])
-    seconds = median_time(lambda: static_envelope(SPANS, BRIDGE.EI, SECTIONS, *hs20), 5)
-    print(f"static envelope of an HS20 truck at 4 sections: {seconds:.3f} s")
+    envelope = median_time(lambda: static_envelope(SPANS, BRIDGE.EI, SECTIONS, *hs20), 5)
+    report(
+        "moment, shear and displacement at 4 sections of that crossing (10 modes, static "
+        "envelope) / static HS20 envelope",
+        "",
+        f"{sections:.3f} s / {envelope:.3f} s",
+    )

@@ -26,6 +26,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from _timing import report
+
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = ROOT / "examples" / "generated-road.yaml"
 I76 = ROOT / "examples" / "i76-span3.yaml"
@@ -70,19 +72,25 @@ def main() -> None:
             files.append(path.name)
         out = ["--output-dir", "out", *pdf]
         run([files[0], *out], work)  # compiled kernels on disk, as after any first use
-        print(f"one report ({kind}), {EXAMPLE.name}, fresh process each run:")
         wall, fastest, cpu = best([files[0], *out], work)
-        print(f"  wall {wall:5.1f} s (best {fastest:.1f} s; target <= 15 s), CPU {cpu:5.1f} s")
+        report(
+            f"one report, {kind}, `vbi-report` start-up included (`bench_reports.py`)",
+            "<= 15 s",
+            f"{wall:.1f} s wall (best {fastest:.1f} s), {cpu:.1f} s CPU "
+            f"(command, kernel and chromium)",
+        )
         if I76.is_file() and (ROOT.parent / "shared" / "data").is_dir():
             wall, cpu = run([str(I76), *out], work)
             print(f"  I-76 span 3: wall {wall:5.1f} s, CPU {cpu:5.1f} s")
-        print("five parameter files:")
         wall, cpu = run([*files, *out], work)
-        print(f"  one command (one kernel)  wall {wall:5.1f} s, CPU {cpu:5.1f} s")
         separate = [run([name, *out], work) for name in files]
         wall5 = sum(t[0] for t in separate)
         cpu5 = sum(t[1] for t in separate)
-        print(f"  five commands             wall {wall5:5.1f} s, CPU {cpu5:5.1f} s")
+        report(
+            "five parameter files in one command (one kernel) / five commands",
+            "",
+            f"CPU {cpu:.0f} s / {cpu5:.0f} s; wall {wall:.0f} s / {wall5:.0f} s",
+        )
     load = os.getloadavg()[0]
     print(f"(load average {load:.1f} on {os.cpu_count()} cores while measuring)")
 

@@ -9,12 +9,11 @@ from __future__ import annotations
 import warnings
 from pathlib import Path
 
-import numpy as np
-from _timing import median_time
+from _timing import median_time, report
 
 import vbi_lib as vbi
+from vbi_lib import study_data as sd
 from vbi_lib import units as u
-from vbi_lib.study_data import assessment_inputs
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "seed-study"
 
@@ -30,33 +29,32 @@ def table_2_13_1_crossings() -> None:
     }
     road = vbi.Profile.iso8608(700 * u.ft, 1 * u.inch, c10=64e-6, seed=1)
     for name, truck in trucks.items():
+        seconds = {}
         for model, modes in (("one-coordinate", None), ("modal", 5)):
-            seconds = median_time(
+            seconds[model] = median_time(
                 lambda t=truck, m=model, n=modes: vbi.simulate(
                     bridge, t, road, 720 * u.inch, 320 * u.ft, model=m, modes=n
                 ),
                 10,
             )
-            print(f"Table 2.13.1 beam, {name:18s} {model:14s}: {seconds * 1e3:.2f} ms")
+        report(
+            f"one crossing, Table 2.13.1 beam, {name}: one-coordinate / 5 modes",
+            "",
+            f"{seconds['one-coordinate'] * 1e3:.2f} / {seconds['modal'] * 1e3:.2f} ms",
+        )
 
 
 def assessment_set_on_tyres(model: str, modes: int | None) -> tuple[float, int]:
     """The study's 239 crossings with each truck put on an axle (10 % of it) and a tyre."""
-    import pandas as pd
-
-    table = pd.read_csv(DATA / "scenarios-239.csv")
-    profiles = {}
-    for name in table.profile.unique():
-        data = np.loadtxt(DATA / "profiles" / name, delimiter=",")
-        profiles[name] = vbi.Profile(data[:, 0] * u.inch, (data[:, 1] - data[0, 1]) * u.inch)
-    bridges, trucks, roads = assessment_inputs(table, profiles)
+    table, profiles = sd.read_assessment_set(DATA)
+    bridges, trucks, roads = sd.assessment_inputs(table, profiles)
     cars = [vbi.QuarterCar.from_vehicle(t, 0.1 * t.mass, 3.5e6, 4e3) for t in trucks]
 
     def run() -> None:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", vbi.ContactLossWarning)
-            vbi.simulate_many(bridges, cars, roads, 720 * u.inch, 3840 * u.inch, model=model,
-                              modes=modes)  # fmt: skip
+            vbi.simulate_many(bridges, cars, roads, sd.ASSESSMENT_SPEED,
+                              sd.ASSESSMENT_BRIDGE_START, model=model, modes=modes)  # fmt: skip
 
     return median_time(run, 3), len(table)
 
@@ -64,8 +62,14 @@ def assessment_set_on_tyres(model: str, modes: int | None) -> tuple[float, int]:
 if __name__ == "__main__":
     table_2_13_1_crossings()
     if DATA.is_dir():
+        seconds = {}
         for model, modes in (("one-coordinate", None), ("modal", 5)):
-            seconds, n = assessment_set_on_tyres(model, modes)
-            print(f"{n} crossings of the study's set as quarter cars, {model}: {seconds:.3f} s")
+            seconds[model], n = assessment_set_on_tyres(model, modes)
+        report(
+            f"the study's {n} crossings as quarter cars (`simulate_many`, general kernels): "
+            "one-coordinate / 5 modes",
+            "",
+            f"{seconds['one-coordinate']:.3f} / {seconds['modal']:.3f} s",
+        )
     else:
         print(f"no data at {DATA}: assessment-set benchmark skipped")

@@ -168,3 +168,35 @@ def test_batch_plot_marks_tyres_that_left_the_road() -> None:
     assert "a tyre left the road in 1" in repr(batch)
     assert batch.to_dataframe()["flight fraction"].iloc[0] == batch.flight_fraction[0]
     plt.close("all")
+
+
+@pytest.mark.parametrize(
+    ("change", "error", "message"),
+    [
+        ({"speeds": [10.0, -1.0, 12.0]}, ValueError, "crossing 1: speed=-1.0 must be"),
+        ({"speeds": [10.0, 11.0, "12"]}, TypeError, "crossing 2: speed='12' must be a number"),
+        ({"speeds": [10.0, True, 12.0]}, TypeError, "crossing 1: speed=True must be a number"),
+        ({"bridge_starts": [5.0, float("nan"), 5.0]}, ValueError, "crossing 1: bridge_start"),
+        ({"bridge_starts": [5.0, 5.0, 30.0]}, ValueError, "crossing 2: the profile"),
+        ({"bridges": [None, None, None]}, TypeError, "crossing 0: bridge must be a vbi.Bridge"),
+        ({"profiles": "road"}, TypeError, "crossing 0: profile must be a vbi.Profile"),
+        ({"modes": [None, 3, None]}, ValueError, "crossing 1: modes=3 applies to model='modal'"),
+    ],
+)
+def test_batch_inputs_are_checked_and_the_crossing_named(
+    change: dict, error: type, message: str
+) -> None:
+    bridge, vehicle, road, _, start = small()
+    args = {"bridges": bridge, "vehicles": vehicle, "profiles": road,
+            "speeds": [10.0, 11.0, 12.0], "bridge_starts": start} | change  # fmt: skip
+    modes = args.pop("modes", None)
+    with pytest.raises(error, match=message):
+        vbi.simulate_many(*args.values(), modes=modes)
+
+
+def test_a_numeric_bridge_start_given_as_text_is_read_as_simulate_reads_it() -> None:
+    bridge, vehicle, road, speed, start = small()
+    batch = vbi.simulate_many(bridge, vehicle, road, [speed, speed], [start, str(start)])
+    np.testing.assert_array_equal(batch.daf[0], batch.daf[1])
+    single = vbi.simulate(bridge, vehicle, road, speed, str(start))
+    assert single.daf[0] == pytest.approx(batch.daf[1, 0], rel=1e-10)

@@ -111,3 +111,37 @@ def test_state_matrices_are_those_of_the_study() -> None:
     np.testing.assert_allclose(f, [0, 0, 0, -psi * m * u.g / mb])
     A0, _, _ = vbi.state_matrices(bridge, truck, v, psi, dpsi, coupled=False)
     assert A0[1, 2] == A0[1, 3] == 0.0
+
+
+def test_highest_frequency_is_the_largest_eigenvalue_of_the_state_matrix() -> None:
+    """The compiled quartic solver against numpy's eigenvalues of A (51)-(58), psi = i/4."""
+    import math
+
+    from vbi_lib.models.one_coordinate import highest_circular_frequency, state_matrices
+
+    rng = np.random.default_rng(8)
+    for trial in range(300):
+        bridge = vbi.Bridge(rng.uniform(5.0, 60.0), int(rng.integers(1, 3)),
+                            10 ** rng.uniform(8.0, 11.0), rng.uniform(500.0, 2e4),
+                            damping_ratio=rng.uniform(0.0, 0.1))  # fmt: skip
+        damping = 0.0 if trial % 3 == 0 else rng.uniform(0.0, 0.9)
+        truck = vbi.Vehicle.from_frequency(rng.uniform(1e3, 6e4), rng.uniform(0.5, 15.0), damping)
+        rate = rng.uniform(1.0, 40.0)
+        coupled, convective = bool(trial % 2), bool(trial % 5)
+        expected = 0.0
+        for psi in np.linspace(0.0, 1.0, 5):
+            slope = math.pi / bridge.span * math.sqrt(1.0 - psi**2)
+            A, _, _ = state_matrices(bridge, truck, rate, psi, slope, coupled, convective)
+            expected = max(expected, np.abs(np.linalg.eigvals(A)).max())
+        got = highest_circular_frequency(bridge, truck, rate, coupled, convective)
+        assert got == pytest.approx(expected, rel=1e-12)
+
+
+def test_highest_frequency_when_truck_and_bridge_have_one_frequency() -> None:
+    """A double root of the decoupled quartic (both methods lose half the digits there)."""
+    from vbi_lib.models.one_coordinate import highest_circular_frequency
+
+    bridge = vbi.Bridge(30.0, 1, 2e10, 8000.0, damping_ratio=0.02)
+    truck = vbi.Vehicle.from_frequency(3e4, bridge.first_frequency_hz, 0.02)
+    omega = highest_circular_frequency(bridge, truck, 20.0, coupled=False)
+    assert omega == pytest.approx(2 * np.pi * bridge.first_frequency_hz, rel=1e-7)

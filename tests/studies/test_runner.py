@@ -229,3 +229,22 @@ def test_a_study_may_hold_any_vehicle() -> None:
     with pytest.raises(ValueError, match="vehicle wheelbase 8.5344 m"):
         studies.run(studies.grid(bridge, trucks["hs20"], studies.FlatProfile(30.0, 0.05), 20.0,
                                  5.0), "serial")  # fmt: skip
+
+
+def test_a_road_slid_back_is_the_segment_shifted_number_for_number() -> None:
+    """The runner's one-copy road equals Profile.segment(...).shifted(...) bit for bit."""
+    from vbi_lib.studies.runner import _road
+
+    rng = np.random.default_rng(5)
+    for trial in range(200):
+        x = np.cumsum(rng.uniform(0.01, 1.0, 50))
+        if trial % 3 == 0:  # round stations: the cut often falls on a sample
+            x = np.unique(np.round(x, 1))
+        profile = vbi.Profile(x, rng.normal(size=x.size))
+        offset = rng.uniform(0.0, 0.9 * profile.length)
+        if trial % 4 == 0:
+            offset = float(x[rng.integers(1, x.size - 1)] - x[0])
+        expected = profile.segment(profile.start + offset, profile.end).shifted(-offset)
+        road = _road(profile, offset)
+        np.testing.assert_array_equal(road.x, expected.x)
+        np.testing.assert_array_equal(road.elevation, expected.elevation)

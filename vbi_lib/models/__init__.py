@@ -15,6 +15,11 @@ Each model integrates any vehicle of :mod:`vbi_lib.vehicles` with its general ke
 bookkeeping and event location in :mod:`~vbi_lib.models.axles`); the study's sprung mass
 keeps each model's compiled sprung-mass kernel.
 
+Batches of crossings run on *lane kernels* (:mod:`~vbi_lib.models.lanes`,
+:mod:`~vbi_lib.models.lanes_one_coordinate`, :mod:`~vbi_lib.models.lanes_modal`): a block
+of crossings advances one step at a time on the CPU's SIMD lanes, each crossing over the
+grid :func:`vbi_lib.simulate` would build (:mod:`~vbi_lib.models.grid`).
+
 Results are :class:`~vbi_lib.models.results.Crossing` (a subclass per model) and
 :class:`~vbi_lib.models.results.BatchResult`; responses at sections, computed after the run
 (:mod:`~vbi_lib.models.sections`), are :class:`~vbi_lib.models.sections.SectionResponse`.

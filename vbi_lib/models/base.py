@@ -5,15 +5,17 @@ from one model to the next: its compiled kernel, the default time step it needs 
 static deflection its DAF divides by.  Everything else is here, written once:
 
 * the checks of a crossing's inputs (:func:`check_crossing`);
-* the node grid (:func:`node_grid`): the vehicle's position is that of its first axle;
-  every profile sample under every axle, every axle's arrival at the bridge ends and the
-  interior supports are nodes, so the road under each axle is a straight line within a step
-  and the coefficients switch only at nodes; gaps longer than ``speed * dt`` are subdivided
-  evenly; each step knows the span each axle is on (any number of spans).  The road under
-  a tyre is the profile averaged over its footprint
-  (:mod:`vbi_lib.vehicles.footprint`), precomputed once per crossing at the profile's
-  stations;
-* broadcasting of the batch arguments (:func:`broadcast`);
+* the node grid (:func:`~vbi_lib.models.grid.node_grid`): the vehicle's position is that of
+  its first axle; every profile sample under every axle, every axle's arrival at the bridge
+  ends and the interior supports are nodes, so the road under each axle is a straight line
+  within a step and the coefficients switch only at nodes; gaps longer than
+  ``speed * dt`` are subdivided evenly; each step knows the span each axle is on (any
+  number of spans).  The road under a tyre is the profile averaged over its footprint
+  (:mod:`vbi_lib.vehicles.footprint`);
+* the checked inputs of a batch (:class:`Batch`) and what a model does with one
+  (:meth:`CrossingModel.integrate_many` and friends): the study's sprung mass on one or two
+  spans goes to the model's lane kernel (:mod:`~vbi_lib.models.lanes`), every other
+  crossing to fallbacks that build one model and one grid per crossing;
 * the refinement of the midspan peaks inside a step (:func:`downward_peak`, from the cubic
   Hermite interpolant of the displacement and its rate at the step's ends);
 * the bookkeeping of the contact force on the bridge (:func:`track_contact`): its largest and
@@ -41,8 +43,10 @@ from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
 from ..units import g as GRAVITY
-from ..vehicles import Vehicle, VehicleSystem, as_system
-from ..vehicles.footprint import footprint_average
+from ..vehicles import Vehicle, as_system
+from .grid import Grid, node_grid
+
+__all__ = ["Batch", "CrossingModel", "Grid", "check_crossing", "node_grid"]
 
 #: ``omega * dt`` of the default time step.
 DEFAULT_OMEGA_DT = 0.1
@@ -117,19 +121,90 @@ def check_crossing(
     return speed, bridge_start
 
 
-def broadcast(args: dict[str, Any], caller: str) -> tuple[int, dict[str, list]]:
-    """Repeat single values to the common length of the list arguments of a batch function."""
-    lengths = {k: len(v) for k, v in args.items() if isinstance(v, list | tuple | np.ndarray)}
-    if len(set(lengths.values())) > 1:
-        raise ValueError(f"list arguments must have one length; got {lengths}")
-    n = next(iter(lengths.values())) if lengths else 1
-    if n == 0:
-        raise ValueError(f"{caller} needs at least one crossing; got empty lists")
-    expanded = {
-        k: (list(v) if isinstance(v, list | tuple | np.ndarray) else [v] * n)
-        for k, v in args.items()
-    }
-    return n, expanded
+@dataclass(frozen=True, eq=False)
+class Batch:
+    """The checked inputs of ``n`` crossings, one array entry per crossing.
+
+    Objects shared by crossings are stored once: crossing ``i`` has the bridge
+    ``bridges[bridge[i]]``, the vehicle ``vehicles[vehicle[i]]`` and the road
+    ``profiles[profile[i]]``.  ``modes[i]`` is the model's checked ``modes`` option, 0 for a
+    model that takes none.  Built by :func:`vbi_lib.simulate_many`.
+    """
+
+    bridges: tuple[Bridge, ...]
+    vehicles: tuple[Any, ...]
+    profiles: tuple[Profile, ...]
+    bridge: np.ndarray
+    vehicle: np.ndarray
+    profile: np.ndarray
+    speed: np.ndarray
+    bridge_start: np.ndarray
+    coupled: np.ndarray
+    convective: np.ndarray
+    modes: np.ndarray
+
+    def __len__(self) -> int:
+        return int(self.speed.size)
+
+    def column(self, objects: str, attribute: str) -> np.ndarray:
+        """An attribute of each crossing's bridge or vehicle, e.g. ``column("bridges", "span")``."""
+        values = np.array([getattr(obj, attribute) for obj in getattr(self, objects)])
+        return values[getattr(self, objects[:-1])]
+
+    @staticmethod
+    def groups(*keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Distinct rows of the key columns: one crossing of each, and each crossing's row.
+
+        Returns ``(first, inverse)``: ``first[k]`` is a crossing with the ``k``-th distinct
+        combination of keys, and crossing ``i`` has combination ``inverse[i]``.
+        """
+        order = np.lexsort(keys[::-1])
+        change = np.zeros(order.size, dtype=bool)
+        change[0] = True
+        for key in keys:
+            ordered = key[order]
+            change[1:] |= ordered[1:] != ordered[:-1]
+        label = np.cumsum(change) - 1
+        inverse = np.empty(order.size, np.int64)
+        inverse[order] = label
+        return order[change], inverse
+
+    def n_spans(self) -> np.ndarray:
+        """Each crossing's number of spans, ``(n,)``."""
+        return np.array([x.n_spans for x in self.bridges], dtype=np.int64)[self.bridge]
+
+    def lane_rows(self) -> np.ndarray:
+        """Which crossings the lane kernels take, ``(n,)`` booleans.
+
+        The study's sprung mass (:class:`~vbi_lib.Vehicle`) on a bridge whose peaks the
+        summary holds (:data:`PEAK_SLOTS` spans or fewer).
+        """
+        sprung = np.array([isinstance(v, Vehicle) for v in self.vehicles], dtype=bool)
+        return sprung[self.vehicle] & (self.n_spans() <= PEAK_SLOTS)
+
+    def take(self, rows: np.ndarray) -> Batch:
+        """The crossings ``rows`` (indices or a mask) as a batch of their own, holding only
+        the objects they use."""
+
+        def used(objects: tuple, codes: np.ndarray) -> tuple[tuple, np.ndarray]:
+            kept, inverse = np.unique(codes[rows], return_inverse=True)
+            return tuple(objects[k] for k in kept), inverse.astype(np.int64).ravel()
+
+        bridges, bridge = used(self.bridges, self.bridge)
+        vehicles, vehicle = used(self.vehicles, self.vehicle)
+        profiles, profile = used(self.profiles, self.profile)
+        return Batch(bridges, vehicles, profiles, bridge, vehicle, profile, self.speed[rows],
+                     self.bridge_start[rows], self.coupled[rows], self.convective[rows],
+                     self.modes[rows])  # fmt: skip
+
+    def crossing(self, i: int) -> tuple[Bridge, Any, Profile, float, float, dict[str, Any]]:
+        """Crossing ``i``'s bridge, vehicle, road, speed, bridge start and model options."""
+        modes = int(self.modes[i]) if self.modes[i] else None
+        options = {"coupled": bool(self.coupled[i]), "convective": bool(self.convective[i]),
+                   "modes": modes}  # fmt: skip
+        return (self.bridges[self.bridge[i]], self.vehicles[self.vehicle[i]],
+                self.profiles[self.profile[i]], float(self.speed[i]),
+                float(self.bridge_start[i]), options)  # fmt: skip
 
 
 def parameters(
@@ -150,84 +225,6 @@ def parameters(
     params[P_START] = bridge_start
     params[P_SPAN] = span
     return params
-
-
-# ---------------------------------------------------------------------------- grid
-@dataclass(frozen=True)
-class Grid:
-    """Nodes of one crossing: stations [m], road elevations [m] and the span of each step.
-
-    ``x`` is the station of the vehicle's first axle.  ``span_of_step[k]`` is 0 off the
-    bridge, else the span (1, 2, ...) the first axle is on from node ``k`` to node ``k + 1``;
-    it has one entry per node (the last unused), so that batches slice nodes and steps with
-    the same offsets.  ``elevation`` is the road under the first axle; ``road`` and
-    ``axle_span``, shape ``(n_axles, n_nodes)``, give them for every axle (the road as its
-    tyre sees it).  ``dt_max`` is the longest step [s].
-    """
-
-    x: np.ndarray
-    elevation: np.ndarray
-    span_of_step: np.ndarray
-    dt_max: float
-    road: np.ndarray
-    axle_span: np.ndarray
-
-
-def node_grid(
-    bridge: Bridge,
-    profile: Profile,
-    speed: float,
-    bridge_start: float,
-    dt: float,
-    stop: float,
-    vehicle: VehicleSystem | None = None,
-) -> Grid:
-    """Nodes from the first axle's start to ``stop``, subdivided to steps of ``speed * dt``.
-
-    The first axle starts ``wheelbase`` after the profile's first station (the last axle on
-    it).  Nodes: every profile sample under every axle, the bridge ends and supports under
-    every axle.  A gap between two of those points longer than ``speed * dt`` is cut into
-    equal steps no longer than that.  ``vehicle`` (a :class:`~vbi_lib.vehicles.VehicleSystem`)
-    gives the axles' offsets and footprints; ``None`` is one axle with no footprint.
-    """
-    offsets = np.zeros(1) if vehicle is None else vehicle.offsets
-    footprints = np.zeros(1) if vehicle is None else vehicle.footprint
-    first = profile.start + float(offsets.max())
-    supports = bridge_start + np.array(bridge.supports)
-    if offsets.size == 1:  # one axle: the samples themselves
-        shifted, below = profile.x, supports
-    else:
-        shifted = (profile.x[None, :] + offsets[:, None]).ravel()
-        below = (supports[None, :] + offsets[:, None]).ravel()
-    inside = shifted[(shifted > first) & (shifted < stop)]
-    below = below[below >= first]
-    points = np.union1d(np.concatenate(([first], inside, below)), [stop])
-    points = points[points <= stop]
-    gaps = np.diff(points)
-    keep = np.concatenate(([True], gaps > 1e-12 * max(1.0, abs(stop))))
-    points = points[keep]
-    gaps = np.diff(points)
-    pieces = np.maximum(1, np.ceil(gaps / (speed * dt) - 1e-9)).astype(np.int64)
-    starts = np.repeat(points[:-1], pieces)
-    widths = np.repeat(gaps / pieces, pieces)
-    within = np.arange(pieces.sum()) - np.repeat(np.cumsum(pieces) - pieces, pieces)
-    x = np.append(starts + within * widths, points[-1])
-    seen: dict[float, np.ndarray] = {0.0: profile.elevation}
-    span_edges = np.array(bridge.supports)
-    road = np.empty((offsets.size, x.size))
-    axle_span = np.zeros((offsets.size, x.size), dtype=np.int64)
-    for a, (offset, footprint) in enumerate(zip(offsets, footprints, strict=True)):
-        if footprint not in seen:
-            seen[footprint] = footprint_average(profile.x, profile.elevation, footprint)
-        road[a] = np.interp(x - offset, profile.x, seen[footprint])
-        middle = 0.5 * (x[:-1] + x[1:]) - offset - bridge_start
-        axle_span[a, :-1] = np.where(
-            (middle > 0) & (middle < bridge.length),
-            np.searchsorted(span_edges, middle, side="right"),
-            0,
-        )
-    dt_max = float((widths.max() if widths.size else 0) / speed)
-    return Grid(x, road[0], axle_span[0], dt_max, road, axle_span)
 
 
 # ---------------------------------------------------------------------------- kernel helpers
@@ -416,7 +413,100 @@ class CrossingModel:
         """
         raise NotImplementedError
 
+    # ------------------------------------------------------------------ batches
+    #: The model's lane kernel, ``run(batch, dt) -> (summaries, dt_max)``, for the crossings
+    #: of :meth:`Batch.lane_rows`; ``None``: every crossing takes the fallbacks.
+    lane_kernel: ClassVar[Any] = None
+
     @classmethod
-    def integrate_many(cls, models: list[CrossingModel], grids: list[Grid]) -> np.ndarray:
-        """Summaries ``(n, SUMMARY_SIZE)`` of many crossings, no histories kept."""
+    def check_modes(cls, modes: object) -> int:
+        """The ``modes`` option checked; 0 for a model that takes none (``modes=None``)."""
+        if modes is not None:
+            raise ValueError(f"modes={modes!r}: model={cls.name!r} takes no modes option")
+        return 0
+
+    @classmethod
+    def check_bridge(cls, bridge: Bridge) -> None:
+        """Refuse a layout of spans the model cannot run (by default it runs any)."""
+
+    @classmethod
+    def one_of(cls, batch: Batch, i: int) -> CrossingModel:
+        """The model of crossing ``i`` of a batch."""
+        bridge, vehicle, _, speed, start, options = batch.crossing(i)
+        return cls(bridge, vehicle, speed, start, **options)
+
+    @classmethod
+    def default_time_steps(cls, batch: Batch) -> np.ndarray:
+        """Largest default step of each crossing of a batch [s], ``(n,)``.
+
+        This fallback asks one crossing of each distinct bridge, vehicle, options and speed;
+        models override it with array code.
+        """
+        first, inverse = batch.groups(batch.bridge, batch.vehicle, batch.modes, batch.coupled,
+                                      batch.convective, batch.speed)  # fmt: skip
+        steps = np.array([cls.one_of(batch, int(i)).default_time_step()[0] for i in first])
+        return steps[inverse]
+
+    @classmethod
+    def span_static_deflections_of(cls, batch: Batch) -> np.ndarray:
+        """Each crossing's :meth:`span_static_deflections` [m], ``(n, max(2, n_spans))``.
+
+        NaN beyond a crossing's spans.  This fallback asks one crossing of each distinct
+        bridge, vehicle and ``modes``.
+        """
+        first, inverse = batch.groups(batch.bridge, batch.vehicle, batch.modes)
+        out = np.full((first.size, max(PEAK_SLOTS, int(batch.n_spans().max()))), np.nan)
+        for k, i in enumerate(first):
+            values = cls.one_of(batch, int(i)).span_static_deflections()
+            out[k, : values.size] = values
+        return out[inverse]
+
+    @classmethod
+    def integrate_many(cls, batch: Batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Summaries ``(n, SUMMARY_SIZE)`` and largest steps ``(n,)`` [s] of a batch.
+
+        ``dt`` is each crossing's largest step [s].  The crossings of
+        :meth:`Batch.lane_rows` run on the model's :attr:`lane_kernel`; the others get one
+        model and one grid each and go to :meth:`integrate_setups`.  Bridges with more spans
+        than :data:`PEAK_SLOTS` are the driver's (one crossing at a time, with histories).
+        """
+        n = len(batch)
+        lanes = batch.lane_rows() if cls.lane_kernel is not None else np.zeros(n, dtype=bool)
+        if lanes.all():
+            return cls.lane_kernel(batch, dt)
+        summaries = np.full((n, SUMMARY_SIZE), np.nan)
+        steps = np.full(n, np.nan)
+        if lanes.any():
+            summaries[lanes], steps[lanes] = cls.lane_kernel(batch.take(lanes), dt[lanes])
+        models, grids = cls.models_and_grids(batch, dt, np.flatnonzero(~lanes))
+        summaries[~lanes] = cls.integrate_setups(models, grids)
+        steps[~lanes] = [g.dt_max for g in grids]
+        return summaries, steps
+
+    @classmethod
+    def models_and_grids(
+        cls, batch: Batch, dt: np.ndarray, rows: np.ndarray
+    ) -> tuple[list[CrossingModel], list[Grid]]:
+        """One model and one grid of each crossing ``rows`` (equal grids built once)."""
+        models, grids = [], []
+        cache: dict = {}
+        for i in rows:
+            model = cls.one_of(batch, int(i))
+            system = model.system
+            key = (int(batch.profile[i]), model.bridge.supports, model.speed,
+                   model.bridge_start, float(dt[i]), tuple(system.offsets),
+                   tuple(system.footprint))  # fmt: skip
+            if key not in cache:
+                stop = model.bridge_start + model.bridge.length + system.wheelbase
+                cache[key] = node_grid(model.bridge, batch.profiles[batch.profile[i]],
+                                       model.speed, model.bridge_start, float(dt[i]), stop,
+                                       vehicle=system)  # fmt: skip
+            models.append(model)
+            grids.append(cache[key])
+        return models, grids
+
+    @classmethod
+    def integrate_setups(cls, models: list[CrossingModel], grids: list[Grid]) -> np.ndarray:
+        """Summaries ``(n, SUMMARY_SIZE)`` of crossings given as models and grids (no
+        histories kept): the model's kernel for any vehicle, in parallel."""
         raise NotImplementedError

@@ -7,7 +7,9 @@ the result, the same way for every model.
 
 from __future__ import annotations
 
+import math
 import warnings
+from typing import Any
 
 import numpy as np
 
@@ -26,8 +28,8 @@ from .base import (
     S_PEAK,
     S_TENSION_TIME,
     SUMMARY_SIZE,
+    Batch,
     CrossingModel,
-    broadcast,
     check_crossing,
     node_grid,
 )
@@ -213,6 +215,141 @@ def simulate(
     )
 
 
+def _is_list(value: object) -> bool:
+    return isinstance(value, list | tuple | np.ndarray)
+
+
+def _factorize(values: object, n: int) -> tuple[np.ndarray, tuple]:
+    """Codes and the distinct objects (by identity) of a list, or of one repeated value."""
+    if not _is_list(values):
+        return np.zeros(n, np.int64), (values,)
+    codes = np.empty(n, np.int64)
+    seen: dict[int, int] = {}
+    distinct = []
+    for i, obj in enumerate(values):
+        code = seen.get(id(obj))
+        if code is None:
+            code = seen[id(obj)] = len(distinct)
+            distinct.append(obj)
+        codes[i] = code
+    return codes, tuple(distinct)
+
+
+def _numbers(values: object, n: int) -> np.ndarray:
+    """Floats of a list (or one repeated value); entries that are not numbers become NaN."""
+    if isinstance(values, np.ndarray) and values.dtype.kind in "fiu" and values.ndim == 1:
+        return values.astype(float)
+    items = values if _is_list(values) else [values]
+    out = np.full(len(items), np.nan)
+    for i, value in enumerate(items):
+        if isinstance(value, int | float | np.integer | np.floating) and not isinstance(
+            value, bool | np.bool_
+        ):
+            out[i] = value
+    return out if _is_list(values) else np.full(n, out[0])
+
+
+def _flags(name: str, values: object, n: int) -> np.ndarray:
+    if isinstance(values, np.ndarray) and values.dtype == np.bool_ and values.ndim == 1:
+        return values.copy()
+    if not _is_list(values):
+        return np.full(n, check.flag(name, values))
+    out = np.empty(n, dtype=bool)
+    for i, value in enumerate(values):
+        try:
+            out[i] = check.flag(name, value)
+        except TypeError as exc:
+            raise TypeError(f"crossing {i}: {exc}") from None
+    return out
+
+
+def _modes(kind: type[CrossingModel], values: object, n: int) -> np.ndarray:
+    if not _is_list(values):
+        return np.full(n, kind.check_modes(values), np.int64)
+    out = np.empty(n, np.int64)
+    for i, value in enumerate(values):
+        try:
+            out[i] = kind.check_modes(value)
+        except (TypeError, ValueError) as exc:
+            raise type(exc)(f"crossing {i}: {exc}") from None
+    return out
+
+
+def _one_crossing(args: dict[str, Any], i: int) -> tuple[float, float]:
+    """:func:`check_crossing` of crossing ``i``, its message prefixed with the crossing."""
+    values = [args[k][i] if _is_list(args[k]) else args[k]
+              for k in ("bridges", "vehicles", "profiles", "speeds", "bridge_starts")]  # fmt: skip
+    try:
+        return check_crossing(*values)
+    except (TypeError, ValueError) as exc:
+        raise type(exc)(f"crossing {i}: {exc}") from None
+
+
+def _wheelbase(vehicle: object) -> float:
+    """A vehicle's wheelbase [m]; NaN for an object that is not one of the library's vehicles."""
+    try:
+        return as_system(vehicle).wheelbase
+    except TypeError:
+        return math.nan
+
+
+def _batch(kind: type[CrossingModel], args: dict[str, Any]) -> Batch:
+    """Check the arguments of :func:`simulate_many` as arrays; errors name the crossing.
+
+    The arrays find the crossings that may fail :func:`check_crossing` (or the model's
+    layout check); those alone are checked one at a time, whose message is raised.
+    """
+    lengths = {k: len(v) for k, v in args.items() if _is_list(v)}
+    if len(set(lengths.values())) > 1:
+        raise ValueError(f"list arguments must have one length; got {lengths}")
+    n = next(iter(lengths.values())) if lengths else 1
+    if n == 0:
+        raise ValueError("simulate_many needs at least one crossing; got empty lists")
+    b, bridges = _factorize(args["bridges"], n)
+    v, vehicles = _factorize(args["vehicles"], n)
+    p, profiles = _factorize(args["profiles"], n)
+    speed = _numbers(args["speeds"], n)
+    start = _numbers(args["bridge_starts"], n)
+    # where the arrays see a problem, one crossing's checks name it (or accept the value)
+    wheelbase = np.array([_wheelbase(x) for x in vehicles])
+    suspects = np.isnan(wheelbase)[v]
+    for codes, objects, kind_ in ((b, bridges, Bridge), (p, profiles, Profile)):
+        wrong = [k for k, obj in enumerate(objects) if not isinstance(obj, kind_)]
+        suspects |= np.isin(codes, wrong)
+    suspects |= ~(np.isfinite(speed) & (speed > 0)) | ~np.isfinite(start)
+    for i in np.flatnonzero(suspects):
+        speed[i], start[i] = _one_crossing(args, int(i))
+    # the profile covers the approach, the bridge and (several axles) the wheelbase beyond
+    wheelbase = wheelbase[v]
+    end = start + np.array([x.length for x in bridges])[b]
+    first = np.array([x.start for x in profiles])[p]
+    last = np.array([x.end for x in profiles])[p]
+    short = (start < first) | (end > last + 1e-9 * np.maximum(1.0, np.abs(end)))
+    slack = 1e-9 * np.maximum(1.0, np.abs(end) + wheelbase)
+    short |= (wheelbase > 0) & ((start - wheelbase < first - slack)
+                                | (end + wheelbase > last + slack))  # fmt: skip
+    for i in np.flatnonzero(short):
+        _one_crossing(args, int(i))
+    for k, bridge in enumerate(bridges):
+        try:
+            kind.check_bridge(bridge)
+        except ValueError as exc:
+            raise ValueError(f"crossing {int(np.argmax(b == k))}: {exc}") from None
+    return Batch(
+        bridges=bridges,
+        vehicles=vehicles,
+        profiles=profiles,
+        bridge=b,
+        vehicle=v,
+        profile=p,
+        speed=speed,
+        bridge_start=start,
+        coupled=_flags("coupled", args["coupled"], n),
+        convective=_flags("convective", args["convective"], n),
+        modes=_modes(kind, args["modes"], n),
+    )
+
+
 def simulate_many(
     bridges: Bridge | list[Bridge],
     vehicles: object | list,
@@ -230,15 +367,22 @@ def simulate_many(
 
     Every argument but ``model`` and ``dt`` is one value or a list; lists must share one
     length ``n`` and single values are repeated.  Results equal :func:`simulate` crossing by
-    crossing (no histories are kept).  Batches of the study's sprung mass run on each
-    model's compiled sprung-mass kernel; any other vehicle on the general kernel, one
-    crossing per parallel task.  A bridge of three or more spans (``model="modal"``) runs one
-    crossing at a time, its span peaks taken from the histories.
+    crossing to rounding (no histories are kept).  The study's sprung mass on one or two
+    spans runs on each model's lane kernel: blocks of crossings advance together on the
+    SIMD lanes of the CPU (:mod:`~vbi_lib.models.lanes`), the blocks shared among numba's
+    threads; any other vehicle on the model's general kernel, one crossing per parallel
+    task.  A bridge of three or more spans (``model="modal"``) runs one crossing at a time,
+    its span peaks taken from the histories.
 
     Returns
     -------
     BatchResult
         ``daf`` has ``max(2, n_spans)`` columns (NaN beyond a crossing's spans).
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`simulate`, the message starting with the crossing (``"crossing 3: ..."``).
 
     Warns
     -----
@@ -265,57 +409,31 @@ def simulate_many(
         "convective": convective,
         "modes": modes,
     }
-    n, expanded = broadcast(args, "simulate_many")
     if dt is not None:
         dt = check.positive("dt", dt)
-    setups, grids = [], []
-    cache: dict = {}
-    for i in range(n):
-        bridge = expanded["bridges"][i]
-        vehicle = expanded["vehicles"][i]
-        profile = expanded["profiles"][i]
-        try:
-            speed, start = check_crossing(
-                bridge, vehicle, profile, expanded["speeds"][i], expanded["bridge_starts"][i]
-            )
-            setup = kind(
-                bridge,
-                vehicle,
-                speed,
-                start,
-                coupled=check.flag("coupled", expanded["coupled"][i]),
-                convective=check.flag("convective", expanded["convective"][i]),
-                modes=expanded["modes"][i],
-            )
-        except (TypeError, ValueError) as exc:
-            raise type(exc)(f"crossing {i}: {exc}") from None
-        step = setup.default_time_step()[0] if dt is None else dt
-        system = setup.system
-        axles = (tuple(system.offsets), tuple(system.footprint))
-        key = (id(profile), bridge.supports, speed, start, step, axles)
-        if key not in cache:
-            stop = start + bridge.length + system.wheelbase
-            cache[key] = node_grid(bridge, profile, speed, start, step, stop, vehicle=system)
-        setups.append(setup)
-        grids.append(cache[key])
-    wide = [i for i, s in enumerate(setups) if s.bridge.n_spans > PEAK_SLOTS]
-    narrow = sorted(set(range(n)) - set(wide))
-    peaks = np.full((n, max(PEAK_SLOTS, *(s.bridge.n_spans for s in setups))), np.nan)
+    batch = _batch(kind, args)
+    n = len(batch)
+    steps = kind.default_time_steps(batch) if dt is None else np.full(n, dt)
+    n_spans = batch.n_spans()
+    peaks = np.full((n, max(PEAK_SLOTS, int(n_spans.max()))), np.nan)
     summaries = np.full((n, SUMMARY_SIZE), np.nan)
-    if narrow:
-        summaries[narrow] = kind.integrate_many([setups[i] for i in narrow],
-                                                [grids[i] for i in narrow])  # fmt: skip
+    dt_max = np.full(n, np.nan)
+    narrow = n_spans <= PEAK_SLOTS
+    if narrow.any():
+        summaries[narrow], dt_max[narrow] = kind.integrate_many(batch.take(narrow), steps[narrow])
         peaks[narrow, :PEAK_SLOTS] = summaries[narrow, S_PEAK : S_PEAK + PEAK_SLOTS]
-    for i in wide:  # more spans than the summary holds: one crossing with its histories
-        summary, _, fields, _ = setups[i].integrate(grids[i])
+    wide = np.flatnonzero(~narrow)
+    models, grids = kind.models_and_grids(batch, steps, wide)
+    for i, setup, grid in zip(wide, models, grids, strict=True):
+        # more spans than the summary holds: one crossing with its histories
+        summary, _, fields, _ = setup.integrate(grid)
         summaries[i] = summary
-        peaks[i, : setups[i].bridge.n_spans] = setups[i].span_peaks(summary, fields, grids[i])
-    weights = np.array([s.system.weight for s in setups])
-    statics = np.full(peaks.shape, np.nan)
-    for i, s in enumerate(setups):
-        statics[i, : s.bridge.n_spans] = s.span_static_deflections()
-    daf = peaks / statics
-    unilateral = np.array([s.system.has_unilateral for s in setups])
+        dt_max[i] = grid.dt_max
+        peaks[i, : setup.bridge.n_spans] = setup.span_peaks(summary, fields, grid)
+    daf = peaks / kind.span_static_deflections_of(batch)
+    systems = [as_system(x) for x in batch.vehicles]
+    weights = np.array([x.weight for x in systems])[batch.vehicle]
+    unilateral = np.array([x.has_unilateral for x in systems])[batch.vehicle]
     min_ratio, tension, flight = _contact(summaries, weights, unilateral)
     lost = int((min_ratio < 0).sum())
     if lost:
@@ -329,12 +447,12 @@ def simulate_many(
         )
     return BatchResult(
         model=kind.name,
-        speed=np.array([s.speed for s in setups]),
+        speed=batch.speed,
         daf=daf,
         contact_force_amplification=summaries[:, S_MAX_FORCE] / weights,
         peak_contact_position=summaries[:, S_MAX_AT],
         min_contact_force_ratio=min_ratio,
         tension_fraction=tension,
         flight_fraction=flight,
-        dt=np.array([g.dt_max for g in grids]),
+        dt=dt_max,
     )

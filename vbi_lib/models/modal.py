@@ -74,6 +74,7 @@ from .base import (
     P_STIFFNESS,
     PEAK_SLOTS,
     SUMMARY_SIZE,
+    Batch,
     CrossingModel,
     Grid,
     downward_peak,
@@ -83,6 +84,7 @@ from .base import (
     track_contact,
     track_peak,
 )
+from .lanes_modal import run as run_lanes
 from .results import Crossing
 
 
@@ -306,40 +308,6 @@ def _kernel(
         track_contact(summary, weight + force_b, x[n_nodes - 1], 0.0)
 
 
-@numba.njit(cache=True, parallel=True)
-def _batch_kernel(
-    offsets, x, elevation, span_of_step, params, mode_offsets, supports, kappa, coef, omega,
-    zeta, phi_mid, n_spans, coupled, convective, summaries,
-):  # fmt: skip
-    """Run many crossings in parallel; crossing i uses nodes ``offsets[i]:offsets[i+1]``."""
-    n_jobs = offsets.shape[0] - 1
-    for i in numba.prange(n_jobs):
-        a = offsets[i]
-        b = offsets[i + 1]
-        ma = mode_offsets[i]
-        mb = mode_offsets[i + 1]
-        dummy = np.empty((1, 1))
-        _kernel(
-            x[a:b],
-            elevation[a:b],
-            span_of_step[a:b],
-            params[i],
-            np.ascontiguousarray(supports[i, : n_spans[i] + 1]),
-            kappa[ma:mb],
-            np.ascontiguousarray(coef[ma:mb, : n_spans[i]]),
-            omega[ma:mb],
-            zeta[ma:mb],
-            np.ascontiguousarray(phi_mid[i, : n_spans[i], : mb - ma]),
-            coupled[i],
-            convective[i],
-            dummy,
-            dummy,
-            np.empty((1, 2)),
-            np.empty(1),
-            summaries[i],
-        )
-
-
 # ---------------------------------------------------------------------------- model
 @dataclass(frozen=True, eq=False, kw_only=True, repr=False)
 class ModalCrossing(Crossing):
@@ -383,6 +351,8 @@ class Modal(CrossingModel):
     description = "N exact Euler-Bernoulli modes (any spans); Newmark average acceleration"
     result_type = ModalCrossing
 
+    lane_kernel = staticmethod(run_lanes)
+
     def __init__(self, bridge, vehicle, speed, bridge_start, *, coupled, convective, modes):  # noqa: ANN001
         super().__init__(bridge, vehicle, speed, bridge_start, coupled=coupled,
                          convective=convective, modes=modes)  # fmt: skip
@@ -391,9 +361,37 @@ class Modal(CrossingModel):
         self.params = parameters(vehicle, speed, bridge_start, bridge.span)
         self.phi_mid = np.ascontiguousarray(self.basis.shape(np.array(bridge.midspans)))
 
+    @classmethod
+    def check_modes(cls, modes: object) -> int:
+        return check_modes(modes)
+
     def default_time_step(self) -> tuple[float, str]:
         dt = default_time_step(self.bridge, self.vehicle, self.count)
         return dt, f"dt picked as {DEFAULT_OMEGA_DT} / omega = {dt * 1e3:.3f} ms"
+
+    @classmethod
+    def default_time_steps(cls, batch: Batch) -> np.ndarray:
+        """:func:`default_time_step` once per distinct bridge, vehicle and number of modes."""
+        first, inverse = batch.groups(batch.bridge, batch.vehicle, batch.modes)
+        steps = [default_time_step(batch.bridges[batch.bridge[i]],
+                                   batch.vehicles[batch.vehicle[i]], int(batch.modes[i]))
+                 for i in first]  # fmt: skip
+        return np.array(steps)[inverse]
+
+    @classmethod
+    def span_static_deflections_of(cls, batch: Batch) -> np.ndarray:
+        """As the base's; one-axle vehicles scale the unit load's value per bridge and modes."""
+        one_axle = np.array([as_system(v).n_axles == 1 for v in batch.vehicles])
+        if not one_axle[batch.vehicle].all():
+            return super().span_static_deflections_of(batch)
+        first, inverse = batch.groups(batch.bridge, batch.modes)
+        unit = np.full((first.size, max(PEAK_SLOTS, int(batch.n_spans().max()))), np.nan)
+        for k, i in enumerate(first):
+            bridge = batch.bridges[batch.bridge[i]]
+            each = np.array(largest_static_deflection(bridge, int(batch.modes[i])))
+            unit[k, : each.size] = np.full(each.size, each.max()) if bridge.study_layout else each
+        weight = np.array([as_system(v).weight for v in batch.vehicles])[batch.vehicle]
+        return unit[inverse] * weight[:, None]
 
     def static_deflection(self) -> float:
         return static_deflection(self.bridge, self.system, self.count)
@@ -473,46 +471,7 @@ class Modal(CrossingModel):
         return summary, contact[:, None], fields, note
 
     @classmethod
-    def integrate_many(cls, models, grids):  # noqa: ANN001, ANN206
-        if not all(isinstance(m.vehicle, Vehicle) for m in models):
-            return cls._integrate_many_general(models, grids)
-        n = len(models)
-        counts = [m.count for m in models]
-        offsets = np.zeros(n + 1, dtype=np.int64)
-        offsets[1:] = np.cumsum([g.x.size for g in grids])
-        most = max(m.bridge.n_spans for m in models)
-        phi_mid = np.full((n, max(2, most), max(counts)), np.nan)
-        supports = np.full((n, most + 1), np.nan)
-        coef = np.zeros((sum(counts), most, 4))
-        first = 0
-        for i, m in enumerate(models):
-            phi_mid[i, : m.bridge.n_spans, : m.count] = m.phi_mid
-            supports[i, : m.bridge.n_spans + 1] = m.basis.supports
-            coef[first : first + m.count, : m.bridge.n_spans] = m.basis.coefficients
-            first += m.count
-        summaries = np.full((n, SUMMARY_SIZE), np.nan)
-        _batch_kernel(
-            offsets,
-            np.concatenate([g.x for g in grids]),
-            np.concatenate([g.elevation for g in grids]),
-            np.concatenate([g.span_of_step for g in grids]),
-            np.array([m.params for m in models]),
-            np.concatenate(([0], np.cumsum(counts))).astype(np.int64),
-            supports,
-            np.concatenate([m.basis.wavenumber for m in models]),
-            coef,
-            np.concatenate([m.basis.omega for m in models]),
-            np.concatenate([m._zeta() for m in models]),
-            phi_mid,
-            np.array([m.bridge.n_spans for m in models], dtype=np.int64),
-            np.array([m.coupled for m in models], dtype=np.bool_),
-            np.array([m.convective for m in models], dtype=np.bool_),
-            summaries,
-        )
-        return summaries
-
-    @classmethod
-    def _integrate_many_general(cls, models, grids):  # noqa: ANN001, ANN206
+    def integrate_setups(cls, models, grids):  # noqa: ANN001, ANN206
         """Any vehicles: the general kernel, one crossing per parallel task."""
         n = len(models)
         counts = [m.count for m in models]

@@ -69,7 +69,9 @@ from .base import (
     P_SPEED,
     P_START,
     P_STIFFNESS,
+    PEAK_SLOTS,
     SUMMARY_SIZE,
+    Batch,
     CrossingModel,
     Grid,
     downward_peak,
@@ -78,6 +80,8 @@ from .base import (
     track_contact,
     track_peak,
 )
+from .lanes_one_coordinate import run as run_lanes
+from .one_coordinate_step import sprung_mass_omega, sprung_mass_time_steps
 from .results import Crossing
 
 # the model's entries of the parameter vector, after the shared ones
@@ -304,18 +308,6 @@ def _kernel(x, elevation, span_of_step, params, n_spans, coupled, convective, st
         track_contact(summary, force, x[k], 0.0)
 
 
-@numba.njit(cache=True, parallel=True)
-def _batch_kernel(offsets, x, elevation, span_of_step, params, n_spans, coupled, convective,
-                  summaries):  # fmt: skip
-    """Run many crossings in parallel; crossing i uses nodes ``offsets[i]:offsets[i+1]``."""
-    n_jobs = offsets.shape[0] - 1
-    for i in numba.prange(n_jobs):
-        a = offsets[i]
-        b = offsets[i + 1]
-        _kernel(x[a:b], elevation[a:b], span_of_step[a:b], params[i], n_spans[i], coupled[i],
-                convective[i], np.empty((1, 4)), np.empty(1), summaries[i])  # fmt: skip
-
-
 # ---------------------------------------------------------------------------- model
 def system_matrix(
     bridge: Bridge,
@@ -377,17 +369,20 @@ def highest_circular_frequency(
     """Largest eigenvalue modulus of the state matrix over the wheel positions [rad/s].
 
     The axles are put together at five positions from the support to midspan (the coupling
-    is strongest when they all are at midspan).
+    is strongest when they all are at midspan), ``psi = 0, 1/4, ..., 1`` with the slope of
+    the half sine there.  The study's sprung mass takes the roots of its characteristic
+    quartic in compiled code (:mod:`~vbi_lib.models.one_coordinate_step`), remembered for
+    each bridge, vehicle and options (and speed, where the damper's convective term makes
+    ``A`` depend on it); other vehicles the eigenvalues of their state matrices.
     """
+    if _is_sprung_mass(vehicle):
+        return sprung_mass_omega(bridge, vehicle, speed, coupled, convective)
     s = as_system(vehicle)
-    block = None if _is_sprung_mass(vehicle) else _vehicle_block(bridge, s)
+    block = _vehicle_block(bridge, s)
     stack = []
     for psi in np.linspace(0.0, 1.0, 5):
         dpsi = math.pi / bridge.span * math.sqrt(max(0.0, 1.0 - psi**2))
-        if block is None:  # the study's matrices (51)-(58), compiled
-            stack.append(state_matrices(bridge, vehicle, speed, psi, dpsi, coupled, convective)[0])
-        else:
-            stack.append(_couple(block, bridge, s, speed, psi, dpsi, coupled, convective))
+        stack.append(_couple(block, bridge, s, speed, psi, dpsi, coupled, convective))
     return float(np.abs(np.linalg.eigvals(np.array(stack))).max())
 
 
@@ -456,21 +451,55 @@ class OneCoordinate(CrossingModel):
     description = "the study's beam with one coordinate psi z_b (1 or 2 spans); RK4"
     result_type = OneCoordinateCrossing
 
+    lane_kernel = staticmethod(run_lanes)
+
     def __init__(self, bridge, vehicle, speed, bridge_start, *, coupled, convective, modes):  # noqa: ANN001
+        self.check_bridge(bridge)
+        self.check_modes(modes)
+        super().__init__(bridge, vehicle, speed, bridge_start, coupled=coupled,
+                         convective=convective, modes=modes)  # fmt: skip
+        self.params = _parameters(bridge, vehicle, speed, bridge_start)
+
+    @classmethod
+    def check_bridge(cls, bridge: Bridge) -> None:
         if not bridge.study_layout:
             raise ValueError(
                 f"the one-coordinate model bends one span or two equal spans in the study's "
                 f"shape sin(pi x / L); this bridge has spans {bridge.spans} m.  Use "
                 "model='modal', modes=N (exact modes of any layout)"
             )
+
+    @classmethod
+    def check_modes(cls, modes: object) -> int:
         if modes is not None:
             raise ValueError(
                 f"modes={modes!r} applies to model='modal'; the one-coordinate model bends the "
                 "beam in one shape (pass model='modal', modes=N for N beam modes)"
             )
-        super().__init__(bridge, vehicle, speed, bridge_start, coupled=coupled,
-                         convective=convective, modes=modes)  # fmt: skip
-        self.params = _parameters(bridge, vehicle, speed, bridge_start)
+        return 0
+
+    @classmethod
+    def default_time_steps(cls, batch: Batch) -> np.ndarray:
+        sprung = np.array([_is_sprung_mass(v) for v in batch.vehicles])[batch.vehicle]
+        if not sprung.any():
+            return super().default_time_steps(batch)
+        steps = np.empty(len(batch))
+        steps[sprung] = sprung_mass_time_steps(batch.take(sprung))
+        if not sprung.all():
+            steps[~sprung] = super().default_time_steps(batch.take(~sprung))
+        return steps
+
+    @classmethod
+    def span_static_deflections_of(cls, batch: Batch) -> np.ndarray:
+        sprung = np.array([_is_sprung_mass(v) for v in batch.vehicles])[batch.vehicle]
+        if not sprung.all():
+            return super().span_static_deflections_of(batch)
+        # one axle: W / k* on every span (90)-(91), as static_deflection
+        weight = np.array([as_system(x).weight for x in batch.vehicles])[batch.vehicle]
+        static = weight / batch.column("bridges", "generalized_stiffness")
+        out = np.repeat(static[:, None], PEAK_SLOTS, axis=1)
+        out[batch.n_spans() < 2, 1] = np.nan
+        return out
 
     def default_time_step(self) -> tuple[float, str]:
         dt = default_time_step(self.bridge, self.vehicle, self.speed, self.coupled, self.convective)
@@ -531,28 +560,7 @@ class OneCoordinate(CrossingModel):
         return summary, contact[:, None], fields, note
 
     @classmethod
-    def integrate_many(cls, models, grids):  # noqa: ANN001, ANN206
-        if not all(_is_sprung_mass(m.vehicle) for m in models):
-            return cls._integrate_many_general(models, grids)
-        n = len(models)
-        offsets = np.zeros(n + 1, dtype=np.int64)
-        offsets[1:] = np.cumsum([g.x.size for g in grids])
-        summaries = np.full((n, SUMMARY_SIZE), np.nan)
-        _batch_kernel(
-            offsets,
-            np.concatenate([g.x for g in grids]),
-            np.concatenate([g.elevation for g in grids]),
-            np.concatenate([g.span_of_step for g in grids]),
-            np.array([m.params for m in models]),
-            np.array([m.bridge.n_spans for m in models], dtype=np.int64),
-            np.array([m.coupled for m in models], dtype=np.bool_),
-            np.array([m.convective for m in models], dtype=np.bool_),
-            summaries,
-        )
-        return summaries
-
-    @classmethod
-    def _integrate_many_general(cls, models, grids):  # noqa: ANN001, ANN206
+    def integrate_setups(cls, models, grids):  # noqa: ANN001, ANN206
         """Any vehicles: the general kernel, one crossing per parallel task."""
         n = len(models)
         offsets = np.zeros(n + 1, dtype=np.int64)

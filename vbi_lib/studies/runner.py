@@ -54,10 +54,26 @@ def _init_worker() -> None:
 
 
 def _road(profile: Profile, offset: float) -> Profile:
-    """The road slid back by ``offset``: at station ``x`` it has the profile's ``x + offset``."""
+    """The road slid back by ``offset``: at station ``x`` it has the profile's ``x + offset``.
+
+    ``profile.segment(start + offset, end).shifted(-offset)``, number for number, with one
+    copy of the samples instead of two and one interpolation instead of one per sample
+    (a Monte Carlo study makes one road per crossing).
+    """
     if offset == 0.0:
         return profile
-    return profile.segment(profile.start + offset, profile.end).shifted(-offset)
+    x, elevation = profile.x, profile.elevation
+    cut = x[0] + offset
+    if not x[0] <= cut < x[-1]:
+        profile.segment(cut, x[-1])  # raises with the message naming the stations
+    first = np.searchsorted(x, cut, side="right")  # the samples after the cut
+    stations = np.empty(x.size - first + 1)
+    stations[0] = cut
+    stations[1:] = x[first:]
+    heights = np.empty(stations.size)
+    heights[0] = np.interp(cut, x, elevation)
+    heights[1:] = elevation[first:]
+    return Profile(stations + -offset, heights, name=profile.name)
 
 
 def _iri_of_spans(road: Profile, bridge: Bridge, start: float, width: int) -> np.ndarray:

@@ -1,0 +1,420 @@
+r"""Lane kernel of the many-mode model: many crossings per Newmark step.
+
+The equations, the average-acceleration rule and its reduction to one scalar equation for
+the suspension force are those of :mod:`~vbi_lib.models.modal`; here
+:data:`~vbi_lib.models.lanes.LANES` crossings advance together (see
+:mod:`~vbi_lib.models.lanes`).  A step is a sequence of loops over the lanes, inside loops
+over the modes where the modes take part, and each loop writes one flat array: ``z``, the
+per-lane values (vehicle, sums over the modes, summary), or ``y``, the per-mode values laid
+out mode by mode.  A block holds crossings of one number of modes, on bridges of one or two
+spans of any lengths: each mode is evaluated in its general form
+:math:`a \sin ks + b \cos ks + c e^{-ks} + d e^{-k(L_j - s)}` in the span of the node
+(:func:`vbi_lib.modes.shape_values`), each lane with its own coefficients.  The sprung mass
+is the study's :class:`~vbi_lib.Vehicle`.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+from ..modes import beam_modes
+from ..units import g as GRAVITY
+from .base import SUMMARY_SIZE
+from .lanes import (
+    CHUNK,
+    CONTRACT,
+    LANES,
+    P_COUNT,
+    T_INNER,
+    T_LENGTH,
+    T_SHARED,
+    T_SPAN,
+    T_SPANS,
+    T_SPEED,
+    T_START,
+    exp_parts,
+    finish,
+    launch,
+    next_nodes,
+    power_of_two_bits,
+    refine_peaks,
+    shared_table,
+    sincos,
+    start_summaries,
+    start_walkers,
+    track_force,
+    track_peak,
+)
+
+# columns of the table of crossings, after the shared ones
+T_MV, T_KV, T_CV, T_COUPLED, T_CONVECTIVE, T_DESIGN = range(T_SHARED, T_SHARED + 6)
+T_COUNT = T_SHARED + 6
+# per design (bridge and number of modes) and mode: wavenumber, 2 zeta omega, omega^2,
+# phi at the two midspans, then the coefficients (a, b, c, d) in span 1 and in span 2
+M_KAPPA, M_TWO_ZW, M_W2, M_MID1, M_MID2, M_COEF = range(6)
+M_COUNT = M_COEF + 8
+# per-lane constants, then the per-mode constants from row K_COUNT on (mode-major)
+(K_SPEED, K_START, K_SPAN, K_LENGTH, K_KV, K_CV, K_MV, K_WEIGHT, K_CPL, K_EPS_SPEED,
+ K_CV_EPS_SPEED, K_INNER) = range(12)  # fmt: skip
+K_COUNT = 12
+# rows of the scratch of the shapes: s from the span's left support, L_j - s, span 2 or not,
+# and the polynomial parts of exp(-k s) and exp(-k (L_j - s))
+S_S, S_REST, S_SECOND, S_E0, S_E1 = range(5)
+S_COUNT = 5
+# z: per-lane values, the summary from Z_SUMMARY (and the marked turning step after it)
+(Z_UV, Z_VV, Z_LAST_FORCE, Z_LAST_X, Z_LAST_ON, Z_H, Z_RATE, Z_ON, Z_SPAN, Z_ACTIVE, Z_UB,
+ Z_UBD, Z_FORCE, Z_MID, Z_MIDV, Z_NUM, Z_DEN, Z_SV, Z_MID_END, Z_MIDV_END,
+ Z_SUMMARY) = range(21)  # fmt: skip
+Z_COUNT = Z_SUMMARY + SUMMARY_SIZE + P_COUNT
+# y: per-mode values, mode-major
+Y, V, YT, VT, R, INV_DD = range(6)
+Y_COUNT = 6
+# nodes: station, elevation, step active, as (rows, LANES) blocks
+N_X, N_E, N_ACTIVE = range(3)
+
+
+# index helpers: unsigned, so that numba adds no wraparound test for negative indices
+# (which would stop the compiler from seeing that consecutive lanes are consecutive)
+@numba.njit(cache=True, inline="always")
+def _k(row, lane):
+    return np.uint64(row * LANES + lane)
+
+
+@numba.njit(cache=True, inline="always")
+def _m(n, field, lane):
+    """Index of a per-mode constant in ``const``."""
+    return np.uint64((K_COUNT + n * M_COUNT + field) * LANES + lane)
+
+
+@numba.njit(cache=True, inline="always")
+def _y(n, field, lane):
+    return np.uint64((n * Y_COUNT + field) * LANES + lane)
+
+
+@numba.njit(cache=True, inline="always")
+def _node(field, rows, r, lane):
+    return np.uint64((field * rows + r) * LANES + lane)
+
+
+@numba.njit(cache=True, inline="always")
+def _shape(n_modes, r, n, which, lane):
+    """Index of ``phi`` (``which`` 0) or ``dphi`` (1) of mode ``n`` at node ``r``."""
+    return np.uint64(((r * n_modes + n) * 2 + which) * LANES + lane)
+
+
+@numba.njit(cache=True, error_model="numpy", fastmath=CONTRACT)
+def _shapes(nodes, shapes, rows, n_modes, const, scratch, bits, scales):
+    """Mode shapes and slopes at the chunk's nodes near the bridge, all lanes.
+
+    As :func:`vbi_lib.modes.shape_values`: the node's span (the second from beyond the
+    interior support), ``s`` from its left support and ``L_j - s`` to its right one, then
+    ``a sin ks + b cos ks + c exp(-ks) + d exp(-k (L_j - s))`` and its slope.  ``scratch``
+    (:data:`S_COUNT` rows of LANES floats) and ``bits`` (2 LANES int64, seen as floats by
+    ``scales``) carry values from one lane loop to the next so that each loop stays packed.
+
+    Rows with every lane off the bridge are left alone (the steps mask them); stations are
+    clamped to a hair beyond either end of the bridge (rounding of the support stations),
+    which keeps the exponentials finite on lanes off the bridge.
+    """
+    for r in range(rows):
+        near = False
+        for lane in range(LANES):
+            xi = nodes[_node(N_X, rows, r, lane)] - const[_k(K_START, lane)]
+            margin = 1e-6 * const[_k(K_SPAN, lane)]  # rounding of stations at the ends
+            near = near or (xi > -margin and xi < const[_k(K_LENGTH, lane)] + margin)
+        if not near:
+            continue
+        for lane in range(LANES):
+            length = const[_k(K_LENGTH, lane)]
+            inner = const[_k(K_INNER, lane)]
+            margin = 1e-6 * const[_k(K_SPAN, lane)]
+            xi = nodes[_node(N_X, rows, r, lane)] - const[_k(K_START, lane)]
+            xi = min(max(xi, -margin), length + margin)
+            second = xi > inner
+            left = inner if second else 0.0
+            right = length if second else min(inner, length)
+            scratch[_k(S_S, lane)] = xi - left
+            scratch[_k(S_REST, lane)] = right - xi
+            scratch[_k(S_SECOND, lane)] = 1.0 if second else 0.0
+        for n in range(n_modes):
+            # the two exponentials, packed: polynomial parts, then 2**n from its bits
+            for lane in range(LANES):
+                k = const[_m(n, M_KAPPA, lane)]
+                p0, n0 = exp_parts(-k * scratch[_k(S_S, lane)])
+                p1, n1 = exp_parts(-k * scratch[_k(S_REST, lane)])
+                scratch[_k(S_E0, lane)] = p0
+                scratch[_k(S_E1, lane)] = p1
+                bits[lane] = power_of_two_bits(n0)
+                bits[LANES + lane] = power_of_two_bits(n1)
+            for lane in range(LANES):
+                k = const[_m(n, M_KAPPA, lane)]
+                first = M_COEF + 4 if scratch[_k(S_SECOND, lane)] > 0.0 else M_COEF
+                a = const[_m(n, first, lane)]
+                b = const[_m(n, first + 1, lane)]
+                c = const[_m(n, first + 2, lane)]
+                d = const[_m(n, first + 3, lane)]
+                sine, cosine = sincos(k * scratch[_k(S_S, lane)])
+                e0 = scratch[_k(S_E0, lane)] * scales[lane]  # exp(-k s)
+                e1 = scratch[_k(S_E1, lane)] * scales[LANES + lane]  # exp(-k (L_j - s))
+                shapes[_shape(n_modes, r, n, 0, lane)] = a * sine + b * cosine + c * e0 + d * e1
+                shapes[_shape(n_modes, r, n, 1, lane)] = k * (
+                    a * cosine - b * sine - c * e0 + d * e1
+                )
+
+
+@numba.njit(cache=True, error_model="numpy", fastmath=CONTRACT)
+def _step(r, rows, nodes, shapes, const, y, z, n_modes):
+    """One average-acceleration step ``r -> r + 1`` of every lane (see ``modal._kernel``)."""
+    for lane in range(LANES):
+        active = nodes[_node(N_ACTIVE, rows, r, lane)] > 0.0
+        xa = nodes[_node(N_X, rows, r, lane)]
+        xb = nodes[_node(N_X, rows, r + 1, lane)]
+        ea = nodes[_node(N_E, rows, r, lane)]
+        eb = nodes[_node(N_E, rows, r + 1, lane)]
+        speed = const[_k(K_SPEED, lane)]
+        dx = xb - xa
+        middle = 0.5 * (xa + xb) - const[_k(K_START, lane)]
+        on = active & (middle > 0.0) & (middle < const[_k(K_LENGTH, lane)])
+        z[_k(Z_ACTIVE, lane)] = 1.0 if active else 0.0
+        z[_k(Z_H, lane)] = dx / speed
+        z[_k(Z_RATE, lane)] = (eb - ea) / dx * speed if active else 0.0
+        z[_k(Z_ON, lane)] = 1.0 if on else 0.0
+        # span 2 from the interior support on (as the grid's span_of_step)
+        z[_k(Z_SPAN, lane)] = 1.0 if middle >= const[_k(K_INNER, lane)] else 0.0
+        z[_k(Z_UB, lane)] = 0.0
+        z[_k(Z_UBD, lane)] = 0.0
+        z[_k(Z_MID, lane)] = 0.0
+        z[_k(Z_MIDV, lane)] = 0.0
+    # ---- the state at the start of the step: sums over the modes
+    for n in range(n_modes):
+        for lane in range(LANES):
+            on = z[_k(Z_ON, lane)] > 0.0
+            pa = shapes[_shape(n_modes, r, n, 0, lane)] if on else 0.0
+            dpa = shapes[_shape(n_modes, r, n, 1, lane)] if on else 0.0
+            q = y[_y(n, Y, lane)]
+            qd = y[_y(n, V, lane)]
+            z[_k(Z_UB, lane)] += pa * q
+            z[_k(Z_UBD, lane)] += pa * qd + const[_k(K_EPS_SPEED, lane)] * dpa * q
+            second = z[_k(Z_SPAN, lane)] == 1.0
+            pm = const[_m(n, M_MID2, lane)] if second else const[_m(n, M_MID1, lane)]
+            z[_k(Z_MID, lane)] += pm * q
+            z[_k(Z_MIDV, lane)] += pm * qd
+    # ---- the suspension force at the start (right limit), from the equations
+    for lane in range(LANES):
+        cpl = const[_k(K_CPL, lane)]
+        kv = const[_k(K_KV, lane)]
+        cv = const[_k(K_CV, lane)]
+        uv = z[_k(Z_UV, lane)]
+        vv = z[_k(Z_VV, lane)]
+        ea = nodes[_node(N_E, rows, r, lane)]
+        rate = z[_k(Z_RATE, lane)]
+        force = kv * (cpl * z[_k(Z_UB, lane)] + ea - uv) + cv * (
+            cpl * z[_k(Z_UBD, lane)] + rate - vv
+        )
+        z[_k(Z_FORCE, lane)] = force
+        h = z[_k(Z_H, lane)]
+        on = z[_k(Z_ON, lane)] > 0.0
+        xa = nodes[_node(N_X, rows, r, lane)]
+        track_force(z, Z_SUMMARY, lane, on, const[_k(K_WEIGHT, lane)] + force, xa, h)
+        beta = 0.25 * h * h
+        gamma = 0.5 * h
+        av = force / const[_k(K_MV, lane)]
+        z[_k(Z_UV, lane)] = uv + h * vv + beta * av  # predictors
+        z[_k(Z_VV, lane)] = vv + gamma * av
+        z[_k(Z_SV, lane)] = kv * beta + cv * gamma
+    # ---- predictors of the modes, and the sums the end of the step needs
+    for lane in range(LANES):
+        z[_k(Z_UB, lane)] = 0.0
+        z[_k(Z_UBD, lane)] = 0.0
+    for n in range(n_modes):
+        for lane in range(LANES):
+            on = z[_k(Z_ON, lane)] > 0.0
+            pa = shapes[_shape(n_modes, r, n, 0, lane)] if on else 0.0
+            pb = shapes[_shape(n_modes, r + 1, n, 0, lane)] if on else 0.0
+            dpb = shapes[_shape(n_modes, r + 1, n, 1, lane)] if on else 0.0
+            h = z[_k(Z_H, lane)]
+            q = y[_y(n, Y, lane)]
+            qd = y[_y(n, V, lane)]
+            acc = (-const[_m(n, M_TWO_ZW, lane)] * qd - const[_m(n, M_W2, lane)] * q
+                   - pa * (const[_k(K_WEIGHT, lane)] + z[_k(Z_FORCE, lane)]))  # fmt: skip
+            qt = q + h * qd + 0.25 * h * h * acc
+            qdt = qd + 0.5 * h * acc
+            y[_y(n, YT, lane)] = qt
+            y[_y(n, VT, lane)] = qdt
+            z[_k(Z_UB, lane)] += pb * qt
+            z[_k(Z_UBD, lane)] += pb * qdt + const[_k(K_EPS_SPEED, lane)] * dpb * qt
+    # ---- the implicit equations at the end of the step reduce to one for F
+    for lane in range(LANES):
+        cpl = const[_k(K_CPL, lane)]
+        kv = const[_k(K_KV, lane)]
+        cv = const[_k(K_CV, lane)]
+        uvt = z[_k(Z_UV, lane)]
+        vvt = z[_k(Z_VV, lane)]
+        eb = nodes[_node(N_E, rows, r + 1, lane)]
+        rate = z[_k(Z_RATE, lane)]
+        z[_k(Z_NUM, lane)] = kv * (cpl * z[_k(Z_UB, lane)] + eb - uvt) + cv * (
+            cpl * z[_k(Z_UBD, lane)] + rate - vvt
+        )
+        z[_k(Z_DEN, lane)] = 1.0 + z[_k(Z_SV, lane)] / const[_k(K_MV, lane)]
+    for n in range(n_modes):
+        for lane in range(LANES):
+            on = z[_k(Z_ON, lane)] > 0.0
+            pb = shapes[_shape(n_modes, r + 1, n, 0, lane)] if on else 0.0
+            dpb = shapes[_shape(n_modes, r + 1, n, 1, lane)] if on else 0.0
+            h = z[_k(Z_H, lane)]
+            beta = 0.25 * h * h
+            two_zw = const[_m(n, M_TWO_ZW, lane)]
+            w2 = const[_m(n, M_W2, lane)]
+            inv_dd = 1.0 / (1.0 + two_zw * 0.5 * h + w2 * beta)
+            rr = (
+                -two_zw * y[_y(n, VT, lane)]
+                - w2 * y[_y(n, YT, lane)]
+                - pb * const[_k(K_WEIGHT, lane)]
+            )
+            g = const[_k(K_CPL, lane)] * (
+                z[_k(Z_SV, lane)] * pb + const[_k(K_CV_EPS_SPEED, lane)] * beta * dpb
+            )
+            y[_y(n, INV_DD, lane)] = inv_dd
+            y[_y(n, R, lane)] = rr
+            z[_k(Z_DEN, lane)] += g * pb * inv_dd
+            z[_k(Z_NUM, lane)] += g * rr * inv_dd
+    for lane in range(LANES):
+        h = z[_k(Z_H, lane)]
+        force = z[_k(Z_NUM, lane)] / z[_k(Z_DEN, lane)]
+        z[_k(Z_FORCE, lane)] = force
+        av = force / const[_k(K_MV, lane)]
+        z[_k(Z_UV, lane)] += 0.25 * h * h * av
+        z[_k(Z_VV, lane)] += 0.5 * h * av
+        z[_k(Z_MID_END, lane)] = 0.0
+        z[_k(Z_MIDV_END, lane)] = 0.0
+    # ---- the modes at the end of the step, and the midspan of the step's span
+    for n in range(n_modes):
+        for lane in range(LANES):
+            on = z[_k(Z_ON, lane)] > 0.0
+            pb = shapes[_shape(n_modes, r + 1, n, 0, lane)] if on else 0.0
+            h = z[_k(Z_H, lane)]
+            acc = (y[_y(n, R, lane)] - pb * z[_k(Z_FORCE, lane)]) * y[_y(n, INV_DD, lane)]
+            q = y[_y(n, YT, lane)] + 0.25 * h * h * acc
+            qd = y[_y(n, VT, lane)] + 0.5 * h * acc
+            y[_y(n, Y, lane)] = q
+            y[_y(n, V, lane)] = qd
+            second = z[_k(Z_SPAN, lane)] == 1.0
+            pm = const[_m(n, M_MID2, lane)] if second else const[_m(n, M_MID1, lane)]
+            z[_k(Z_MID_END, lane)] += pm * q
+            z[_k(Z_MIDV_END, lane)] += pm * qd
+    for lane in range(LANES):
+        on = z[_k(Z_ON, lane)] > 0.0
+        track_peak(z, Z_SUMMARY, lane, on, z[_k(Z_SPAN, lane)], z[_k(Z_MID, lane)],
+                   z[_k(Z_MID_END, lane)], z[_k(Z_MIDV, lane)], z[_k(Z_MIDV_END, lane)],
+                   z[_k(Z_H, lane)])  # fmt: skip
+        # the contact force at the step's end: the crossing's last node uses it
+        active = z[_k(Z_ACTIVE, lane)] > 0.0
+        i = _k(Z_LAST_FORCE, lane)
+        z[i] = const[_k(K_WEIGHT, lane)] + z[_k(Z_FORCE, lane)] if active else z[i]
+        i = _k(Z_LAST_X, lane)
+        z[i] = nodes[_node(N_X, rows, r + 1, lane)] if active else z[i]
+        i = _k(Z_LAST_ON, lane)
+        z[i] = z[_k(Z_ON, lane)] if active else z[i]
+    refine_peaks(z, Z_SUMMARY)
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _block(lanes, px, pe, roads, table, counts, designs, summaries, widest):
+    """Run the crossings ``lanes`` (``-1``: unused lane; one number of modes) to their ends."""
+    n_modes = counts[np.int64(table[lanes[0], T_DESIGN])]
+    chunk = max(8, min(CHUNK, 1024 // n_modes))
+    rows = chunk + 1
+    const = np.zeros((K_COUNT + n_modes * M_COUNT) * LANES)
+    z = np.zeros(Z_COUNT * LANES)
+    y = np.zeros(n_modes * Y_COUNT * LANES)
+    for lane in range(LANES):
+        row = table[lanes[lane] if lanes[lane] >= 0 else lanes[0]]
+        speed = row[T_SPEED]
+        const[_k(K_SPEED, lane)] = speed
+        const[_k(K_START, lane)] = row[T_START]
+        const[_k(K_SPAN, lane)] = row[T_SPAN]
+        const[_k(K_LENGTH, lane)] = row[T_LENGTH]
+        const[_k(K_INNER, lane)] = row[T_INNER]
+        const[_k(K_KV, lane)] = row[T_KV]
+        const[_k(K_CV, lane)] = row[T_CV]
+        const[_k(K_MV, lane)] = row[T_MV]
+        const[_k(K_WEIGHT, lane)] = row[T_MV] * GRAVITY
+        const[_k(K_CPL, lane)] = row[T_COUPLED]
+        eps = row[T_CONVECTIVE]
+        const[_k(K_EPS_SPEED, lane)] = eps * speed
+        const[_k(K_CV_EPS_SPEED, lane)] = row[T_CV] * eps * speed
+        design = np.int64(row[T_DESIGN])
+        for n in range(n_modes):
+            for f in range(M_COUNT):
+                const[_m(n, f, lane)] = designs[design, f, n]
+        start_summaries(z, Z_SUMMARY, np.int64(row[T_SPANS]), lane)
+    scratch = np.empty(S_COUNT * LANES)
+    bits = np.empty(2 * LANES, np.int64)
+    nodes = np.empty(3 * rows * LANES)
+    shapes = np.empty(rows * n_modes * 2 * LANES)  # rows off the bridge: masked, never read
+    grid = nodes.reshape((3, rows, LANES))
+    walkers = start_walkers(lanes, px, pe, roads, table, grid[N_X], grid[N_E])
+    for lane in range(LANES):
+        z[_k(Z_UV, lane)] = grid[N_E, 0, lane]  # at rest in static equilibrium
+    while next_nodes(lanes, px, pe, roads, table, walkers, grid[N_X], grid[N_E],
+                     grid[N_ACTIVE], chunk):  # fmt: skip
+        _shapes(nodes, shapes, rows, n_modes, const, scratch, bits, bits.view(np.float64))
+        for r in range(chunk):
+            _step(r, rows, nodes, shapes, const, y, z, n_modes)
+        for lane in range(LANES):
+            grid[N_X, 0, lane] = grid[N_X, chunk, lane]
+            grid[N_E, 0, lane] = grid[N_E, chunk, lane]
+    for lane in range(LANES):
+        # the last node: the force at the end of the last step
+        track_force(z, Z_SUMMARY, lane, z[_k(Z_LAST_ON, lane)] > 0.0,
+                    z[_k(Z_LAST_FORCE, lane)], z[_k(Z_LAST_X, lane)], 0.0)  # fmt: skip
+    finish(lanes, z, Z_SUMMARY, walkers, summaries, widest)
+
+
+@numba.njit(cache=True, parallel=True)
+def _run(blocks, px, pe, roads, table, counts, designs, summaries, widest):
+    for b in numba.prange(blocks.shape[0]):
+        _block(blocks[b], px, pe, roads, table, counts, designs, summaries, widest)
+
+
+@numba.njit(cache=True)
+def _run_serial(blocks, px, pe, roads, table, counts, designs, summaries, widest):
+    for b in range(blocks.shape[0]):
+        _block(blocks[b], px, pe, roads, table, counts, designs, summaries, widest)
+
+
+def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
+    """Summaries ``(n, SUMMARY_SIZE)`` and largest steps ``(n,)`` [s] of a batch.
+
+    ``batch`` is a :class:`~vbi_lib.models.base.Batch` of the study's vehicles with
+    ``batch.modes`` the number of modes of each crossing; ``dt`` the largest step [s].
+    """
+    table = shared_table(batch, dt, T_COUNT)
+    table[:, T_MV] = batch.column("vehicles", "mass")
+    table[:, T_KV] = batch.column("vehicles", "stiffness")
+    table[:, T_CV] = batch.column("vehicles", "damping")
+    table[:, T_COUPLED] = batch.coupled
+    table[:, T_CONVECTIVE] = batch.convective
+    # one design per bridge and number of modes
+    first, inverse = batch.groups(batch.bridge, batch.modes)
+    table[:, T_DESIGN] = inverse
+    counts = batch.modes[first]
+    width = int(counts.max())
+    designs = np.zeros((first.size, M_COUNT, width))
+    for d, count in enumerate(counts):
+        bridge = batch.bridges[batch.bridge[first[d]]]
+        basis = beam_modes(bridge, int(count))
+        designs[d, M_KAPPA, :count] = basis.wavenumber
+        # as the model's kernel has them: zeta the bridge's, phi at the midspans
+        zeta = np.full(count, bridge.damping_ratio)
+        designs[d, M_TWO_ZW, :count] = 2.0 * zeta * basis.omega
+        designs[d, M_W2, :count] = basis.omega * basis.omega
+        mid = basis.shape(np.array(bridge.midspans))
+        designs[d, M_MID1, :count] = mid[0]
+        for j in range(bridge.n_spans):
+            designs[d, M_COEF + 4 * j : M_COEF + 4 * j + 4, :count] = basis.coefficients[:, j].T
+            if j > 0:
+                designs[d, M_MID2, :count] = mid[j]
+    # a block holds one number of modes
+    return launch((_run, _run_serial), batch, table, batch.modes, counts, designs)
