@@ -65,6 +65,7 @@ US = System(
     {
         **_COMMON,
         "length": ("ft", u.ft),
+        "spacing": ("in", u.inch),
         "deflection": ("in", u.inch),
         "elevation": ("in", u.inch),
         "speed": ("mph", u.mph),
@@ -86,6 +87,7 @@ SI = System(
     {
         **_COMMON,
         "length": ("m", 1.0),
+        "spacing": ("mm", u.mm),
         "deflection": ("mm", u.mm),
         "elevation": ("mm", u.mm),
         "speed": ("km/h", u.kph),

@@ -4,16 +4,16 @@ Each function draws one of the study's diagrams of the vehicle-bridge system on 
 axes (a new figure about 7 in wide when none is given), labels it with the symbols of the
 book's notation page, and returns the axes:
 
-========================  ================  ===================================================
-function                  study figure      what it shows
-========================  ================  ===================================================
-:func:`combined_systems`  Figure 2.10.1     the parts any vehicle-bridge model needs
-:func:`simplified_model`  Figure 2.13.1     the 2-DOF model: sprung mass on a generalised beam
-:func:`single_span_model` Figure 2.13.2     the single-span 2-DOF model (equations 33-58)
-:func:`two_span_model`    Figure 2.13.3     the two-span 2-DOF model (equations 59-81)
-:func:`decoupled_model`   Figure 2.15.1     the decoupled model (equations 92-99)
-:func:`coupled_model`     Figure 2.15.2     the coupled 2-DOF model and its contact force
-========================  ================  ===================================================
+=============================  ==============  ===============================================
+function                       study figure    what it shows
+=============================  ==============  ===============================================
+:func:`combined_systems`       Figure 2.10.1   the parts any vehicle-bridge model needs
+:func:`simplified_model`       Figure 2.13.1   the 2-DOF model: a sprung mass on one coordinate
+:func:`single_span_model`      Figure 2.13.2   the single-span 2-DOF model (equations 33-58)
+:func:`two_span_model`         Figure 2.13.3   the two-span 2-DOF model (equations 59-81)
+:func:`decoupled_model`        Figure 2.15.1   the decoupled model (equations 92-99)
+:func:`coupled_model`          Figure 2.15.2   the coupled 2-DOF model and its contact force
+=============================  ==============  ===============================================
 
 The symbols: span :math:`L`, flexural rigidity :math:`EI`, mass per length :math:`\bar m`,
 bridge damping ratio :math:`\zeta_b`, shape function :math:`\psi(x)`, generalised coordinate
