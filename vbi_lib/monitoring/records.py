@@ -450,11 +450,12 @@ def daf_from_record(
         plan["shape"] = crawl_shape(
             _checked("crawl", crawl), crawl_fs, plan["crawl_speed"], float(baseline_fraction)
         )
-    several = np.ndim(signal) == 2 or (
-        isinstance(signal, list | tuple)
-        and len(signal) > 0
-        and all(np.ndim(event) >= 1 for event in signal)
-    )
+    # a list of records of different lengths is several events (np.ndim of the whole list
+    # would try to make it one array and fail)
+    if isinstance(signal, list | tuple):
+        several = len(signal) > 0 and all(np.ndim(event) >= 1 for event in signal)
+    else:
+        several = np.ndim(signal) == 2
     events = list(signal) if several else [signal]
     n = len(events)
     if n == 0:
