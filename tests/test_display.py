@@ -83,3 +83,11 @@ def test_table_refuses_what_it_cannot_show() -> None:
         display.table(frame, "", "table-a")
     with pytest.raises(ValueError, match="frame has no rows"):
         display.table(frame.iloc[:0], "c", "table-a")
+
+
+def test_table_writes_integers_as_integers() -> None:
+    import pandas as pd
+
+    frame = pd.DataFrame({"spans": [1, 2], "DAF [-]": [1.0, 2.5]})
+    text = display.table(frame, "c", "table-ints", number_format="{:.2f}", index=False)
+    assert "| 1 | 1.00 |" in text.markdown and "| 2 | 2.50 |" in text.markdown

@@ -203,15 +203,17 @@ class Table:
 
 
 def _cell(value: Any, number_format: str) -> str:
-    if isinstance(value, bool):
+    """One cell's text: integers as integers, other numbers in ``number_format``."""
+    kind = getattr(getattr(value, "dtype", None), "kind", "")
+    if isinstance(value, bool) or kind == "b":
         return "yes" if value else "no"
-    if isinstance(value, int | float) and not isinstance(value, bool):
+    if isinstance(value, int) or kind in ("i", "u"):
+        return str(int(value))
+    if isinstance(value, float) or kind == "f":
         try:
-            return number_format.format(value)
+            return number_format.format(float(value))
         except (ValueError, TypeError):
             return str(value)
-    if hasattr(value, "dtype") and getattr(value.dtype, "kind", "") in "iuf":
-        return number_format.format(value.item())
     return str(value)
 
 
