@@ -171,6 +171,8 @@ class Bridge:
     ) -> Bridge:
         """The study's beam from a path's midspan stiffness and the first frequency (82)-(84).
 
+        The book's :eq:`study-82` to :eq:`study-84`.
+
         ``EI = K_mid L^3 / 48`` for one span (82) and ``EI = K_mid L^3 / pi^4`` for two (83);
         the mass per span ``pi^4 EI / ((2 pi f_1)^2 L^3)`` (84) then gives the frequency.
 
@@ -301,23 +303,34 @@ class Bridge:
 
     @property
     def generalized_mass(self) -> float:
-        """``m* = N mbar L / 2`` [kg] (36), (62); one span or two equal spans."""
+        """``m* = N mbar L / 2`` [kg] (36), (62); one span or two equal spans.
+
+        The book's :eq:`study-36` and :eq:`study-62`.
+        """
         self._study_only("generalized_mass")
         return self.n_spans * self.mass_per_length * self.span / 2.0
 
     @property
     def generalized_stiffness(self) -> float:
-        """``k* = N pi^4 EI / (2 L^3)`` [N/m] (37), (63); one span or two equal spans."""
+        """``k* = N pi^4 EI / (2 L^3)`` [N/m] (37), (63); one span or two equal spans.
+
+        The book's :eq:`study-37` and :eq:`study-63`.
+        """
         self._study_only("generalized_stiffness")
         return self.n_spans * math.pi**4 * self.EI / (2.0 * self.span**3)
 
     @property
     def generalized_damping(self) -> float:
-        """``c* = 2 zeta omega_b m*`` [N s/m], mass-proportional damping (40)-(43), (66)."""
+        """``c* = 2 zeta omega_b m*`` [N s/m], mass-proportional damping (40)-(43), (66).
+
+        The book's :eq:`study-43` and :eq:`study-66`.
+        """
         return 2.0 * self.damping_ratio * self.circular_frequency * self.generalized_mass
 
     def static_deflection(self, force: float) -> float:
         """The model's own midspan deflection under ``force`` at midspan [m] (90), (91).
+
+        The book's :eq:`study-90` and :eq:`study-91`.
 
         ``2 P L^3 / (pi^4 EI)`` for one span, ``P L^3 / (pi^4 EI)`` for two: in both cases
         ``P / k*``.  Positive number (magnitude of the downward deflection).
@@ -337,6 +350,8 @@ class Bridge:
 
     def exact_static_deflection(self, force: float) -> float:
         """Exact beam midspan deflection under ``force`` at midspan [m] (38), (64).
+
+        The book's :eq:`study-38` and :eq:`study-64`.
 
         ``P L^3 / (48 EI)`` for one span; ``23 P L^3 / 1536 EI`` for two equal continuous
         spans with the load at midspan of one span.  Other layouts:
@@ -431,6 +446,8 @@ def reference_beam(
 
 def shape_function_error(n_spans: int) -> float:
     """Error of the sine shape function in the midspan deflection under a midspan load (39), (65).
+
+    The book's :eq:`study-39` and :eq:`study-65`.
 
     The model's deflection ``P / k*`` against the exact beam value: one span
     ``1 - 96 / pi^4`` (1.45 %), two spans ``1 - 1536 / (23 pi^4)`` (31.4 %).

@@ -39,6 +39,8 @@ ISO_BAND = (0.011, 2.83)
 def max_sample_spacing(min_speed: float, max_frequency_hz: float) -> float:
     """Largest profile sample spacing ``S_max = v_min / (2 f_max)`` [m] (study equation 32).
 
+    The book's :eq:`study-32`.
+
     A profile feature of wavelength ``lambda`` loads the truck at ``v / lambda`` Hz; to
     resolve loading up to ``f_max`` at the slowest speed ``v_min``, two samples per
     wavelength ``v_min / f_max`` are needed.
