@@ -409,8 +409,8 @@ SOFT = [
      "first_frequency_hz=60"),
     ("a class F road", lambda: vbi.Profile.iso8608(100.0, 0.05, iso_class="F", seed=1),
      "iso_class='F'"),
-    ("waviness 4.5", lambda: vbi.Profile.iso8608(100.0, 0.05, c10=1e-4, waviness=4.5, seed=1),
-     "waviness=4.5"),
+    ("waviness 4.8", lambda: vbi.Profile.iso8608(100.0, 0.05, c10=1e-4, waviness=4.8, seed=1),
+     "waviness=4.8"),
     ("a 0.3 m step", lambda: vbi.Profile.step(20.0, 0.05, 10.0, 0.3), "height=0.3"),
     ("200 km/h", lambda: simulate(speed=200 / 3.6), "speed=55.5556"),
     ("a road sampled too coarsely for the bridge",
@@ -425,8 +425,8 @@ SOFT = [
      lambda: vbi.iri(vbi.Profile.harmonic(500.0, 1.0, 20.0, 0.01)), "profile spacing=1 m"),
     ("a 60 Hz axle hop", lambda: QuarterCar.from_frequencies(4e3, 500.0, 1.5, 60.0).system,
      "frequency 2 of quarter car=60"),
-    ("an ISO fit of waviness 4.5",
-     lambda: vbi.fit_iso8608(vbi.Profile.iso8608(2000.0, 0.05, c10=1e-4, waviness=4.5, seed=2)),
+    ("an ISO fit of waviness 4.8",
+     lambda: vbi.fit_iso8608(vbi.Profile.iso8608(2000.0, 0.05, c10=1e-4, waviness=4.8, seed=2)),
      "fitted waviness="),
 ]  # fmt: skip
 
