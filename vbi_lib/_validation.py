@@ -145,6 +145,22 @@ def finite_array(name: str, values: object) -> np.ndarray:
     return array
 
 
+def real_array(name: str, values: object) -> np.ndarray:
+    """A float array of any shape from numbers (a scalar, a list, an array); text, bools,
+    ``None`` and other objects raise ``TypeError`` naming ``name``."""
+    if isinstance(values, str | bytes) or values is None:
+        raise TypeError(f"{name}={values!r} must be a number or an array of numbers")
+    try:
+        raw = np.asarray(values)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}={values!r} must be a rectangular array of numbers") from None
+    if raw.dtype.kind not in "iuf":
+        for item in raw.ravel():
+            if isinstance(item, bool | np.bool_) or not isinstance(item, numbers.Real):
+                raise TypeError(f"{name}={values!r} must be a number or an array of numbers")
+    return raw.astype(float)
+
+
 def flag(name: str, value: object) -> bool:
     """A boolean switch: ``True`` or ``False`` only (text such as ``'False'`` is refused)."""
     if isinstance(value, bool | np.bool_):
