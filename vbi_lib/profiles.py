@@ -155,6 +155,25 @@ def check_iso_rms(level: float, waviness: float, low: float, high: float) -> flo
     return rms
 
 
+def check_harmonic(
+    length: object, spacing: object, wavelength: object, amplitude: object, phase: object,
+    start: object,
+) -> tuple[float, float, float]:  # fmt: skip
+    """Check a harmonic road's inputs before anything is allocated; ``(wavelength,
+    amplitude, phase)`` as floats.  A wavelength shorter than two samples would alias."""
+    wavelength = check_range("feature_length", wavelength, "wavelength")
+    amplitude = check_range("unevenness", check.non_negative("amplitude", amplitude),
+                            "amplitude")  # fmt: skip
+    phase = check.finite("phase", phase)
+    check_stations(length, spacing, start)
+    if wavelength < 2.0 * float(spacing):
+        raise ValueError(
+            f"wavelength={wavelength!r} m is shorter than two samples of spacing={spacing!r} m: "
+            f"the road would alias; use a spacing below {wavelength / 2:g} m"
+        )
+    return wavelength, amplitude, phase
+
+
 def check_seed(seed: object) -> int | None:
     """A seed of the random phases: ``None`` or a whole number >= 0."""
     if seed is None:
@@ -237,16 +256,9 @@ class Profile:
         >>> round(float(p.elevation.max()) * 1e3, 3)
         2.0
         """
-        wavelength = check_range("feature_length", wavelength, "wavelength")
-        amplitude = check_range("unevenness", check.non_negative("amplitude", amplitude),
-                                "amplitude")  # fmt: skip
-        phase = check.finite("phase", phase)
-        check_stations(length, spacing, start)
-        if wavelength < 2.0 * float(spacing):
-            raise ValueError(
-                f"wavelength={wavelength!r} m is shorter than two samples of spacing="
-                f"{spacing!r} m: the road would alias; use a spacing below {wavelength / 2:g} m"
-            )
+        wavelength, amplitude, phase = check_harmonic(
+            length, spacing, wavelength, amplitude, phase, start
+        )
         x = _stations(length, spacing, start)
         elevation = amplitude * np.sin(2.0 * np.pi * (x - start) / wavelength + phase)
         return cls(x, elevation, name=f"harmonic {wavelength:g} m")

@@ -18,8 +18,15 @@ import warnings
 from dataclasses import dataclass
 from typing import Any
 
-from .. import _validation as check
-from ..profiles import Profile, check_iso_rms, check_seed, check_stations, iso_band, iso_level
+from ..profiles import (
+    Profile,
+    check_harmonic,
+    check_iso_rms,
+    check_seed,
+    check_stations,
+    iso_band,
+    iso_level,
+)
 from ..ranges import check_range
 from ..validity import OutsideValidityWarning
 
@@ -75,15 +82,8 @@ class HarmonicProfile:
     start: float = 0.0
 
     def __post_init__(self) -> None:
-        check_stations(self.length, self.spacing, self.start)
-        wavelength = check_range("feature_length", self.wavelength, "wavelength")
-        check_range("unevenness", check.non_negative("amplitude", self.amplitude), "amplitude")
-        check.finite("phase", self.phase)
-        if wavelength < 2.0 * float(self.spacing):
-            raise ValueError(
-                f"wavelength={self.wavelength!r} m is shorter than two samples of spacing="
-                f"{self.spacing!r} m: the road would alias"
-            )
+        check_harmonic(self.length, self.spacing, self.wavelength, self.amplitude, self.phase,
+                       self.start)  # fmt: skip
 
     @property
     def end(self) -> float:
