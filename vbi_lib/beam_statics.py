@@ -243,6 +243,8 @@ class StaticEnvelope:
 
 
 def effect_index(effect: str) -> int:
+    """The row of ``effect`` (``"displacement"``, ``"moment"`` or ``"shear"``) in the
+    ``(3, ...)`` arrays of :data:`EFFECTS`; ``ValueError`` for another name."""
     if effect not in EFFECTS:
         raise ValueError(f"effect={effect!r} is not known; use one of {', '.join(EFFECTS)}")
     return EFFECTS.index(effect)

@@ -24,6 +24,7 @@ __all__ = ["SUMMARIES", "failure", "init_worker", "run_chunk", "set_threads"]
 
 
 def set_threads(threads: int | None) -> None:
+    """Let numba use ``threads`` threads in this process (``None`` or 0: leave it as it is)."""
     if threads:
         import numba
 
