@@ -158,10 +158,8 @@ def contact_force_amplification(
     """
     speed = check.positive("speed", speed)
     span = check.positive("span", span)
-    bridge_start = float(bridge_start)
-    if isinstance(n_spans, bool) or int(n_spans) != n_spans or n_spans < 1:
-        raise ValueError(f"n_spans={n_spans!r} must be a whole number >= 1")
-    n_spans = int(n_spans)
+    bridge_start = check.finite("bridge_start", bridge_start)
+    n_spans = check.integer("n_spans", n_spans, low=1)
     end = bridge_start + n_spans * span
     if not (profile.start <= bridge_start and end <= profile.end):
         raise ValueError(

@@ -14,6 +14,7 @@ import numpy as np
 from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
+from ..ranges import check_range, warn_outside
 from ..validity import ContactLossWarning, contact_note, flight_note
 from ..vehicles import as_system
 from .base import (
@@ -29,6 +30,8 @@ from .base import (
     CrossingModel,
     broadcast,
     check_crossing,
+    check_step,
+    input_notes,
     node_grid,
 )
 from .modal import Modal
@@ -45,10 +48,24 @@ MODELS: dict[str, type[CrossingModel]] = {
 def _model(model: object) -> type[CrossingModel]:
     if isinstance(model, type) and issubclass(model, CrossingModel):
         return model
-    if not isinstance(model, str) or model not in MODELS:
+    if not isinstance(model, str):
+        raise TypeError(f"model={model!r} must be the name of a crossing model ({list(MODELS)})")
+    if model not in MODELS:
         listing = "; ".join(f"{k!r}: {v.description}" for k, v in MODELS.items())
         raise ValueError(f"model={model!r} is not a crossing model; use one of {listing}")
     return MODELS[model]
+
+
+def _modes(modes: object) -> int | None:
+    """``None``, or a number of modes: an int within the range of ``modes``."""
+    if modes is None:
+        return None
+    return int(check_range("modes", check.integer("modes", modes), warn=False))
+
+
+def _never_pushed_down(peaks: np.ndarray) -> np.ndarray:
+    """Spans whose midspan never went down while the vehicle was on them (peak <= 0)."""
+    return ~(peaks > 0.0) & ~np.isnan(peaks)
 
 
 def _contact(summary: np.ndarray, weight: float, unilateral: object = False) -> tuple:
@@ -133,15 +150,23 @@ def simulate(
     Crossing
         The model's subclass of :class:`~vbi_lib.models.results.Crossing`; its
         ``moment_at``, ``shear_at``, ``displacement_at`` and ``sections`` give the responses
-        at any section.
+        at any section.  The DAF of a span the vehicle never pushed down (its midspan only
+        rose while the vehicle was on it) is NaN, and ``notes`` says so.
 
     Raises
     ------
     TypeError, ValueError
-        Inputs of the wrong type or outside what is allowed, named in the message.
+        Inputs of the wrong type or outside what is allowed, named in the message: the hard
+        ranges of :data:`vbi_lib.ranges.RANGES` (``speed``, ``modes``, ``step_accuracy``),
+        and more than :data:`~vbi_lib.ranges.MAX_NODES` nodes, counted before anything is
+        allocated.
 
     Warns
     -----
+    OutsideValidityWarning
+        The speed, the profile's sampling (the study's rule (32)) or the step outside their
+        intended ranges; the sentence is also in ``notes``, with those on the bridge and the
+        vehicle (which their constructors warned of).
     ContactLossWarning
         A bilateral contact force became tensile on the bridge: the result is outside the
         model's validity (also in ``notes`` and ``lost_contact``).  A unilateral tyre that
@@ -167,19 +192,30 @@ def simulate(
     coupled = check.flag("coupled", coupled)
     convective = check.flag("convective", convective)
     free_vibration = check.non_negative("free_vibration", free_vibration)
+    modes = _modes(modes)
+    given = None if dt is None else check.positive("dt", dt)
     setup = kind(bridge, vehicle, speed, bridge_start, coupled=coupled, convective=convective,
                  modes=modes)  # fmt: skip
-    notes = []
-    if dt is None:
-        dt, note = setup.default_time_step()
-        notes.append(note)
-    else:
-        dt = check.positive("dt", dt)
+    default, note = setup.default_time_step()
+    notes = [note] if given is None else []
+    dt = default if given is None else given
     stop = bridge_start + bridge.length + system.wheelbase + speed * free_vibration
     grid = node_grid(bridge, profile, speed, bridge_start, dt, stop, vehicle=system)
+    objects, outside = input_notes(bridge, system, profile, speed, default)
+    step_note = check_step(grid.dt_max, default, given, kind.max_omega_dt)
+    outside += [step_note] if step_note else []
+    for text in outside:
+        warn_outside(text)
     summary, contact, fields, note = setup.integrate(grid)
-    notes.append(note)
+    notes += [note, *objects, *outside]
     static = setup.static_deflection()
+    peaks = setup.span_peaks(summary, fields, grid)
+    never = _never_pushed_down(peaks)
+    for j in np.flatnonzero(never):
+        notes.append(
+            f"span {j + 1} was never pushed down while the vehicle was on it (its midspan only "
+            "rose): its DAF is not defined and is NaN"
+        )
     min_ratio, tension, flight = _contact(summary, system.weight, system.has_unilateral)
     if flight > 0:
         notes.append(flight_note(float(flight)))
@@ -200,7 +236,7 @@ def simulate(
         contact_force=contact.sum(axis=1),
         axle_contact_force=contact,
         span_of_step=grid.span_of_step,
-        daf=setup.span_peaks(summary, fields, grid) / setup.span_static_deflections(),
+        daf=np.where(never, np.nan, peaks) / setup.span_static_deflections(),
         static_deflection=static,
         dt=grid.dt_max,
         coupled=coupled,
@@ -238,12 +274,21 @@ def simulate_many(
     Returns
     -------
     BatchResult
-        ``daf`` has ``max(2, n_spans)`` columns (NaN beyond a crossing's spans).
+        ``daf`` has ``max(2, n_spans)`` columns (NaN beyond a crossing's spans, and for a
+        span the vehicle never pushed down).
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`simulate`, naming the crossing (``crossing 3: speed=...``).
 
     Warns
     -----
     ContactLossWarning
         Once, naming how many crossings lost contact.
+    OutsideValidityWarning
+        Once, naming how many crossings have a speed, a sampling or a step outside their
+        intended ranges (see :func:`simulate`).
 
     Examples
     --------
@@ -269,6 +314,7 @@ def simulate_many(
     if dt is not None:
         dt = check.positive("dt", dt)
     setups, grids = [], []
+    outside: dict[int, list[str]] = {}
     cache: dict = {}
     for i in range(n):
         bridge = expanded["bridges"][i]
@@ -285,19 +331,30 @@ def simulate_many(
                 start,
                 coupled=check.flag("coupled", expanded["coupled"][i]),
                 convective=check.flag("convective", expanded["convective"][i]),
-                modes=expanded["modes"][i],
+                modes=_modes(expanded["modes"][i]),
             )
+            default = setup.default_time_step()[0]
+            step = default if dt is None else dt
+            system = setup.system
+            axles = (tuple(system.offsets), tuple(system.footprint))
+            key = (id(profile), bridge.supports, speed, start, step, axles)
+            if key not in cache:
+                stop = start + bridge.length + system.wheelbase
+                cache[key] = node_grid(bridge, profile, speed, start, step, stop, vehicle=system)
+            notes = input_notes(bridge, system, profile, speed, default)[1]
+            notes.append(check_step(cache[key].dt_max, default, dt, kind.max_omega_dt))
         except (TypeError, ValueError) as exc:
             raise type(exc)(f"crossing {i}: {exc}") from None
-        step = setup.default_time_step()[0] if dt is None else dt
-        system = setup.system
-        axles = (tuple(system.offsets), tuple(system.footprint))
-        key = (id(profile), bridge.supports, speed, start, step, axles)
-        if key not in cache:
-            stop = start + bridge.length + system.wheelbase
-            cache[key] = node_grid(bridge, profile, speed, start, step, stop, vehicle=system)
+        if any(notes):
+            outside[i] = [text for text in notes if text]
         setups.append(setup)
         grids.append(cache[key])
+    if outside:
+        first = next(iter(outside))
+        warn_outside(
+            f"{len(outside)} of {n} crossings have inputs outside their intended ranges "
+            f"(crossing {first}: {'; '.join(outside[first])})"
+        )
     wide = [i for i, s in enumerate(setups) if s.bridge.n_spans > PEAK_SLOTS]
     narrow = sorted(set(range(n)) - set(wide))
     peaks = np.full((n, max(PEAK_SLOTS, *(s.bridge.n_spans for s in setups))), np.nan)
@@ -314,7 +371,7 @@ def simulate_many(
     statics = np.full(peaks.shape, np.nan)
     for i, s in enumerate(setups):
         statics[i, : s.bridge.n_spans] = s.span_static_deflections()
-    daf = peaks / statics
+    daf = np.where(_never_pushed_down(peaks), np.nan, peaks) / statics
     unilateral = np.array([s.system.has_unilateral for s in setups])
     min_ratio, tension, flight = _contact(summaries, weights, unilateral)
     lost = int((min_ratio < 0).sum())

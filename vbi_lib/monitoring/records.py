@@ -406,8 +406,11 @@ def daf_from_record(
     (1.2, 6.0, 2.45)
     """
     fs = check.positive("sample_rate_hz", sample_rate_hz)
-    if not (0.0 <= float(baseline_fraction) < 0.5):
+    if not (0.0 <= check.number("baseline_fraction", baseline_fraction) < 0.5):
         raise ValueError(f"baseline_fraction={baseline_fraction!r} must be in [0, 0.5)")
+    if not (0.0 < check.number("tail_fraction", tail_fraction) <= 1.0):
+        raise ValueError(f"tail_fraction={tail_fraction!r} must be in (0, 1]")
+    check.integer("order", order, low=1, high=12)
     if span is not None:
         span = check.positive("span", span)
     method, reason, doubtful = _choose_method(method, response, span, crawl is not None)
