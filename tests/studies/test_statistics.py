@@ -59,6 +59,7 @@ def test_contact_summary_counts_by_hand() -> None:
     assert row["largest DAF in contact [-]"] == 2.2  # 4.0 and 2.6 lost contact
     assert row["DAF > 2"] == 3  # 2.6, 4.0, 2.2
     assert row["DAF > 2, lost contact"] == 2
+    assert whole["crossings"].dtype.kind == "i"  # counts stay whole numbers
 
     by = studies.contact_summary(table, by="bridge_name", daf_above=1.5)
     assert by.index.name == "bridge_name"

@@ -206,6 +206,8 @@ def contact_summary(results: pd.DataFrame, by: Any = None, daf_above: float = 2.
             f"{above}, lost contact": int((large & part["lost"]).sum()),
         }
     out = pd.DataFrame.from_dict(rows, orient="index")
+    counts = ["crossings", "lost contact", above, f"{above}, lost contact"]
+    out = out.astype(dict.fromkeys(counts, "int64"))
     if by is not None:
         names = list(np.atleast_1d(by))
         if len(names) > 1:
