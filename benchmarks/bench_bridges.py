@@ -11,9 +11,9 @@ from _timing import median_time
 
 import vbi_lib as vbi
 from vbi_lib import units as u
-from vbi_lib.beam_modes import beam_modes
 from vbi_lib.beam_statics import static_envelope
 from vbi_lib.continuous_beams import _wavenumbers
+from vbi_lib.modes import beam_modes
 
 SPANS = [60 * u.ft, 80 * u.ft, 80 * u.ft, 60 * u.ft]
 BRIDGE = vbi.Bridge.continuous(SPANS, EI=7.5e12 * u.lbf * u.inch**2,

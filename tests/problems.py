@@ -6,6 +6,8 @@ model-specific tests take the cases they need from here.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 import vbi_lib as vbi
@@ -20,6 +22,34 @@ MODEL_CASES = {
     "modal-1": {"model": "modal", "modes": 1},
     "modal-5": {"model": "modal", "modes": 5},
 }
+
+
+def _vehicle_cases() -> dict[str, object]:
+    """One vehicle of every type, defined here once (sizes of a heavy truck)."""
+    from vbi_lib.vehicles import Axle, Convoy, IndependentAxles, RigidTruck, Tyre, hs20
+
+    tyre = Tyre(800.0, 3.0e6, 2.0e3)
+    axles = [Axle(0.0, 60e3, 1.6e6, 2.5e4), Axle(4.5, 140e3, 3.6e6, 6.0e4)]
+    quarter = vbi.QuarterCar.from_frequencies(12_000.0, 900.0, 2.5, 11.0, 0.1, 0.02)
+    return {
+        "sprung mass": vbi.Vehicle.from_frequency(2e4, 3.0, 0.1),
+        "quarter car": quarter,
+        "independent axles": IndependentAxles(axles),
+        "independent axles, tyres": IndependentAxles(
+            [Axle(a.offset, a.load, a.stiffness, a.damping, tyre) for a in axles]
+        ),
+        "rigid truck": RigidTruck(axles, pitch_inertia=9e4),
+        "rigid truck, tyres": RigidTruck(
+            [Axle(a.offset, a.load, a.stiffness, a.damping, tyre) for a in axles],
+            pitch_inertia=9e4,
+        ),
+        "hs20": hs20(),
+        "convoy": Convoy([quarter, vbi.Vehicle.from_frequency(1.5e4, 2.5, 0.1)], [12.0]),
+    }
+
+
+#: Every vehicle type, by a short id (all have unilateral tyres or bilateral contacts).
+VEHICLE_CASES = _vehicle_cases()
 
 #: Biggs (1964) / Yang & Yau (1997) sprung-mass benchmark (model-equations.md).
 BIGGS_BRIDGE = vbi.Bridge(25.0, 1, 2.87e9 * 2.9, 2303.0, damping_ratio=0.0)
@@ -59,3 +89,42 @@ def build_case(name: str) -> tuple[vbi.Bridge, vbi.Vehicle, vbi.Profile, float, 
     approach = 20.0
     road = rough_profile(approach + bridge.length + 1.0, 1 * u.inch, 300e-6, seed=n_spans)
     return bridge, vehicle, road, 720 * u.inch, approach
+
+
+def covering(bridge: vbi.Bridge, vehicle: object, approach: float, spacing: float) -> vbi.Profile:
+    """A flat road from ``wheelbase`` before the approach to ``wheelbase`` past the bridge."""
+    wheelbase = vbi.vehicles.as_system(vehicle).wheelbase
+    length = approach + bridge.length + 2 * wheelbase
+    return vbi.Profile.flat(length, spacing, start=-wheelbase)
+
+
+def moving_forces_midspan(
+    bridge: vbi.Bridge, loads: list[float], entry_times: list[float], speed: float, modes: int,
+    t: np.ndarray,
+) -> np.ndarray:  # fmt: skip
+    """Midspan deflection [m, up] of an undamped simple span under constant moving forces.
+
+    Mode n (shape sin(n pi x / L), modal mass mbar L / 2) of each force entering at its
+    time: forced phase ``F/(w^2 - W^2) (sin W tau - (W/w) sin w tau)`` while the force is on
+    the span (Fryba 1972), free vibration from its state at the exit afterwards; the
+    forces and modes superposed.  ``loads`` downward [N].
+    """
+    span, mbar = bridge.span, bridge.mass_per_length
+    out = np.zeros_like(t)
+    for n in range(1, modes + 1):
+        w = (n * math.pi / span) ** 2 * math.sqrt(bridge.EI / mbar)
+        big_w = n * math.pi * speed / span
+        crossing = span / speed
+        for load, t0 in zip(loads, entry_times, strict=True):
+            amplitude = 2 * load / (mbar * span) / (w**2 - big_w**2)
+            tau = t - t0
+            on = (tau >= 0) & (tau <= crossing)
+            q = np.zeros_like(t)
+            q[on] = amplitude * (np.sin(big_w * tau[on]) - big_w / w * np.sin(w * tau[on]))
+            q1 = amplitude * (math.sin(big_w * crossing) - big_w / w * math.sin(w * crossing))
+            v1 = amplitude * big_w * (math.cos(big_w * crossing) - math.cos(w * crossing))
+            after = tau > crossing
+            s = tau[after] - crossing
+            q[after] = q1 * np.cos(w * s) + v1 / w * np.sin(w * s)
+            out -= q * math.sin(n * math.pi / 2)
+    return out

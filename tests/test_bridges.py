@@ -14,7 +14,7 @@ import pytest
 
 import vbi_lib as vbi
 from vbi_lib import units as u
-from vbi_lib.beam_modes import static_deflection_line
+from vbi_lib.modes import static_deflection_line
 
 LB_IN = u.lbf / u.inch
 LB_IN2 = u.lbf * u.inch**2

@@ -17,8 +17,8 @@ import pytest
 from beam_fe import Beam
 
 import vbi_lib as vbi
-from vbi_lib.beam_modes import beam_modes, propped_cantilever_roots
 from vbi_lib.continuous_beams import count_below, natural_wavenumbers
+from vbi_lib.modes import beam_modes, propped_cantilever_roots
 
 EI, MBAR = 4e9, 5000.0
 UNEQUAL = [18.0, 27.5, 22.0]

@@ -21,8 +21,8 @@ from . import (
     studies,
     study_data,
     units,
+    vehicles,
 )
-from .beam_modes import BeamModes, beam_modes
 from .bridges import Bridge, reference_beam, shape_function_error
 from .models import (
     MODELS,
@@ -34,12 +34,13 @@ from .models import (
     simulate_many,
     state_matrices,
 )
+from .modes import BeamModes, beam_modes
 from .profile_files import ErdFile, ProfileFileError, read_erd, read_profile
 from .profiles import Profile, iso8608_class, max_sample_spacing
 from .roughness import fit_iso8608, iri, profile_spectrum
 from .validity import ContactLossWarning, VbiWarning
 from .vehicle_metrics import contact_force_amplification
-from .vehicles import Vehicle
+from .vehicles import QuarterCar, Vehicle, VehicleSystem
 
 __all__ = [
     "MODELS",
@@ -53,8 +54,10 @@ __all__ = [
     "OneCoordinateCrossing",
     "Profile",
     "ProfileFileError",
+    "QuarterCar",
     "VbiWarning",
     "Vehicle",
+    "VehicleSystem",
     "amplification",
     "beam_modes",
     "beam_statics",
@@ -79,6 +82,7 @@ __all__ = [
     "studies",
     "study_data",
     "units",
+    "vehicles",
 ]
 
 __version__ = "0.2.0"

@@ -21,7 +21,7 @@ Continuous bridges
 ------------------
 :meth:`Bridge.continuous` builds a uniform beam continuous over any number of spans of any
 lengths (pinned supports, no deflection at any of them).  Its exact modes come from
-:func:`vbi_lib.beam_modes` and its statics from :mod:`vbi_lib.beam_statics`; it runs with
+:func:`vbi_lib.modes` and its statics from :mod:`vbi_lib.beam_statics`; it runs with
 ``model="modal"``.  The one-coordinate model and the study's formulas (the generalised
 properties, (82)-(84), (90)-(91)) hold for one span and two equal spans only, and refuse
 other layouts with a message saying what to use instead.
@@ -122,7 +122,7 @@ class Bridge:
 
         One span, or two equal spans, give the same bridge as ``Bridge(span, n_spans, ...)``
         (equal and with the same hash, so the same modes and results).  Run it with
-        ``model="modal"``; its modes are exact (:func:`vbi_lib.beam_modes`).
+        ``model="modal"``; its modes are exact (:func:`vbi_lib.modes`).
 
         Parameters
         ----------

@@ -7,7 +7,7 @@ in their ``notes`` and summary columns; the warning is the signal for scripts.
 
 from __future__ import annotations
 
-__all__ = ["ContactLossWarning", "VbiWarning", "contact_note"]
+__all__ = ["ContactLossWarning", "VbiWarning", "contact_note", "flight_note"]
 
 
 class VbiWarning(UserWarning):
@@ -35,3 +35,21 @@ def contact_note(min_ratio: float, tension_fraction: float) -> str:
         "tyre never leaves the road, so this result is outside its validity (a real tyre "
         "would lift off)"
     )
+
+
+def flight_note(flight_fraction: float) -> str:
+    """One sentence on tyres that left the road, for notes (no warning: it is modelled).
+
+    >>> flight_note(0.05)[:48]
+    'a tyre left the road for 5% of the time on the b'
+    """
+    text = (
+        f"a tyre left the road for {flight_fraction:.0%} of the time on the bridge: its contact "
+        "force cannot pull, so the wheel flew and landed again (modelled, within validity)"
+    )
+    if flight_fraction > 0.25:
+        text += (
+            "; a wheel that bounces this much makes the crossing a chain of impacts whose "
+            "timing grows sensitive to every input (halve dt to see how much the DAF moves)"
+        )
+    return text

@@ -7,7 +7,7 @@
   tag when the source is read, so the rendered page shows a "Show parameters" toggle instead
   of the code (the notebook on disk is not changed).
 - Lets chapters link to an object by the name they import it with: ``{func}`vbi_lib.simulate```
-  resolves to ``vbi_lib.simulation.simulate``, where the API page documents it; a link to a
+  resolves to ``vbi_lib.models.driver.simulate``, where the API page documents it; a link to a
   ``vbi_lib`` name that does not exist is a build warning (an error under ``-W``).
 - Author-year citations in round brackets, "Biggs (1964)" and "(Frýba, 1999)", and a
   bibliography labelled and sorted the same way, "Biggs 1964" (the ``vbi_author_year``

@@ -124,3 +124,47 @@ def test_simulate_many_warns_once_for_all_crossings() -> None:
     with pytest.warns(vbi.ContactLossWarning) as caught:
         vbi.simulate_many(bridge, vehicle, rough, [speed, 0.9 * speed], start)
     assert len(caught) == 1 and "2 of 2 crossings lost contact" in str(caught[0].message)
+
+
+def test_a_multi_axle_crossing_exports_and_plots_each_axle() -> None:
+    import matplotlib.pyplot as plt
+
+    truck = vbi.vehicles.hs20(body="rigid")
+    bridge = vbi.Bridge(20.0, 1, 8e9, 6000.0)
+    road = vbi.Profile.iso8608(60.0, 0.05, c10=64e-6, seed=1)
+    crossing = vbi.simulate(bridge, truck, road, 20.0, 15.0)
+    n = crossing.time.size
+    assert crossing.axle_contact_force.shape == (n, 3)
+    assert crossing.dof_displacement.shape == (n, 5)  # bounce, pitch, three axles
+    np.testing.assert_allclose(crossing.contact_force, crossing.axle_contact_force.sum(axis=1))
+    np.testing.assert_allclose(crossing.vehicle_displacement, crossing.dof_displacement[:, 0])
+    expected = crossing.position - 28 * 0.3048
+    np.testing.assert_allclose(crossing.axle_position[:, 2], expected, atol=1e-12)
+    table = crossing.to_dataframe()
+    assert {"pitch displacement [rad]", "axle 3 contact force / load [-]"} <= set(table.columns)
+    np.testing.assert_allclose(
+        table["axle 2 contact force / load [-]"], crossing.axle_contact_force_ratio[:, 1]
+    )
+    labels = [t.get_text() for t in crossing.plot(kind="contact").get_legend().get_texts()]
+    assert labels == ["axle 1", "axle 2", "axle 3"]
+    labels = [t.get_text() for t in crossing.plot(kind="vehicle").get_legend().get_texts()]
+    assert "pitch" not in labels and "bounce" in labels
+    plt.close("all")
+
+
+def test_batch_plot_marks_tyres_that_left_the_road() -> None:
+    import matplotlib.pyplot as plt
+
+    car = vbi.QuarterCar.from_frequencies(4000.0, 500.0, 1.5, 12.0, 0.1, 0.02)
+    bridge = vbi.Bridge(30.0, 1, 1e10, 5e3)
+    road = vbi.Profile.step(60.0, 0.01, position=15.0, height=0.06)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", vbi.VbiWarning)
+        batch = vbi.simulate_many(bridge, car, [road, flat(bridge, 10.0)], 20.0, 10.0)
+    assert batch.lost_contact.tolist() == [True, False]
+    assert not batch.outside_validity.any() and batch.flight_fraction[0] > 0
+    labels = [t.get_text() for t in batch.plot().get_legend().get_texts()]
+    assert "a tyre left the road" in labels and "contact lost (outside validity)" not in labels
+    assert "a tyre left the road in 1" in repr(batch)
+    assert batch.to_dataframe()["flight fraction"].iloc[0] == batch.flight_fraction[0]
+    plt.close("all")

@@ -12,7 +12,15 @@ import warnings
 
 import numpy as np
 import pytest
-from problems import LB_IN, MODEL_CASES, build_case, flat
+from problems import (
+    LB_IN,
+    MODEL_CASES,
+    VEHICLE_CASES,
+    build_case,
+    covering,
+    flat,
+    rough_profile,
+)
 
 import vbi_lib as vbi
 from vbi_lib.closed_forms import moving_force_peak
@@ -165,3 +173,90 @@ def test_flat_roads_never_warn_of_lost_contact(options: dict) -> None:
     assert not crossing.lost_contact
     assert crossing.tension_fraction == 0.0
     assert 0.5 < crossing.min_contact_force_ratio < 1.0 < crossing.contact_force_amplification
+
+
+# ---------------------------------------------------------------------------- every vehicle
+VEHICLES = pytest.mark.parametrize("vehicle", VEHICLE_CASES.values(), ids=VEHICLE_CASES.keys())
+
+
+@MODELS
+@VEHICLES
+def test_every_vehicle_crawls_to_daf_one(options: dict, vehicle: object) -> None:
+    """A crawl is static: the peak is the static deflection of the axle group at its worst.
+
+    On one span the DAF is 1; on two spans the DAF divides each span's peak by the larger
+    static deflection of the two, so the larger DAF is 1 (an asymmetric axle group loads
+    the two spans' midspans unequally in the many-mode beam).
+    """
+    one = vbi.Bridge(20.0, 1, 8e9, 6000.0)
+    two = vbi.Bridge(20.0, 2, 8e9, 6000.0)
+    for bridge in (one, two):
+        road = covering(bridge, vehicle, 2.0, 0.5)
+        crossing = vbi.simulate(bridge, vehicle, road, 0.2, 2.0, **options)
+        assert crossing.daf.max() == pytest.approx(1.0, abs=3e-3)
+        assert (crossing.daf < 1.0 + 3e-3).all()
+
+
+@MODELS
+@VEHICLES
+def test_every_vehicle_runs_in_batches_as_alone(options: dict, vehicle: object) -> None:
+    """simulate_many (the general kernel in parallel) gives simulate's numbers."""
+    bridge = vbi.Bridge(15.0, 2, 6e9, 5000.0)
+    base = rough_profile(80.0, 0.05, 300e-6, seed=4)
+    wheelbase = vbi.vehicles.as_system(vehicle).wheelbase
+    road = vbi.Profile(base.x - 15.0, base.elevation)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", vbi.ContactLossWarning)
+        batch = vbi.simulate_many(bridge, vehicle, road, [14.0, 18.0], wheelbase, **options)
+        singles = [vbi.simulate(bridge, vehicle, road, v, wheelbase, **options) for v in (14, 18)]
+    for i, single in enumerate(singles):
+        np.testing.assert_allclose(batch.daf[i], single.daf, rtol=1e-12)
+        assert batch.min_contact_force_ratio[i] == pytest.approx(
+            single.min_contact_force_ratio, rel=1e-12, abs=1e-12
+        )
+        assert batch.flight_fraction[i] == pytest.approx(single.flight_fraction, abs=1e-12)
+        assert batch.contact_force_amplification[i] == pytest.approx(
+            single.contact_force_amplification, rel=1e-12
+        )
+
+
+@MODELS
+@VEHICLES
+def test_flat_roads_never_warn_for_any_vehicle(options: dict, vehicle: object) -> None:
+    bridge = vbi.Bridge(25.0, 2, 2e10, 8000.0)
+    road = covering(bridge, vehicle, 10.0, 0.1)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", vbi.VbiWarning)
+        crossing = vbi.simulate(bridge, vehicle, road, 25.0, 10.0, **options)
+    assert not crossing.lost_contact and crossing.flight_fraction == 0.0
+    assert crossing.tension_fraction == 0.0 and not crossing.contact_events.size
+    assert 0.0 < crossing.min_contact_force_ratio < 1.0 < crossing.contact_force_amplification
+
+
+@MODELS
+@pytest.mark.parametrize("name", ["40ft-10Hz-one-span", "100ft-4Hz-two-spans"])
+@pytest.mark.parametrize("roughness", [1.0, 8.0])
+def test_the_general_kernel_reproduces_the_sprung_mass_kernel(
+    options: dict, name: str, roughness: float
+) -> None:
+    """The study's sprung mass runs on its compiled kernel; as a VehicleSystem (one dof, one
+    bilateral contact) it runs on the general kernel of every vehicle: the same crossing,
+    to round-off, on the study's cases (the rough one loses contact)."""
+    bridge, vehicle, road, speed, start = build_case(name)
+    road = vbi.Profile(road.x, roughness * road.elevation)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", vbi.ContactLossWarning)
+        fast = vbi.simulate(bridge, vehicle, road, speed, start, free_vibration=0.3, **options)
+        general = vbi.simulate(bridge, vehicle.system, road, speed, start, free_vibration=0.3,
+                               **options)  # fmt: skip
+    assert general.time.size == fast.time.size
+    for field in ("midspan_displacement", "vehicle_displacement", "vehicle_velocity",
+                  "contact_force"):  # fmt: skip
+        a, b = getattr(general, field), getattr(fast, field)
+        assert np.abs(a - b).max() <= 1e-12 * np.abs(b).max(), field
+    np.testing.assert_allclose(general.daf, fast.daf, rtol=1e-12)
+    assert general.min_contact_force_ratio == pytest.approx(fast.min_contact_force_ratio, 1e-12)
+    assert general.tension_fraction == pytest.approx(fast.tension_fraction, abs=1e-12)
+    assert general.contact_force_amplification == pytest.approx(
+        fast.contact_force_amplification, rel=1e-12
+    )

@@ -196,3 +196,36 @@ def test_a_failed_save_leaves_no_file(tmp_path: Path) -> None:
     assert list(tmp_path.iterdir()) == []
     with pytest.raises(ValueError, match="parquet"):
         studies.save(table, tmp_path / "bad.xlsx")
+
+
+def test_a_study_may_hold_any_vehicle() -> None:
+    """Rows of quarter cars, HS20 trucks and the sprung mass equal single crossings."""
+    import warnings
+
+    bridge = vbi.Bridge(20.0, 1, 8e9, 6000.0)
+    trucks = {
+        "sprung": vbi.Vehicle.from_frequency(2e4, 3.0, 0.1),
+        "quarter": vbi.QuarterCar.from_frequencies(4000.0, 500.0, 1.5, 12.0, 0.1, 0.02),
+        "hs20": vbi.vehicles.hs20(),
+    }
+    road = studies.ISOProfile(60.0, 0.02, iso_class="D", seed=3)
+    models = ["one-coordinate", "modal"]
+    table = studies.grid(bridge, trucks, road, [15.0, 25.0], 15.0, model=models)
+    table.loc[table.model == "modal", "modes"] = 3
+    result = studies.run(table, "serial")
+    assert result["vehicle_axles"].tolist() == [1, 1, 1, 1, 1, 1, 1, 1, 3, 3, 3, 3]
+    assert result.loc[result.vehicle_name == "hs20", "vehicle_stiffness"].isna().all()
+    for i in range(len(table)):
+        row = table.iloc[i]
+        options = {"model": row.model, "modes": None if row.model != "modal" else 3}
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", vbi.ContactLossWarning)
+            crossing = vbi.simulate(bridge, row.vehicle, road.build(), row.speed, 15.0, **options)
+        got = result.iloc[i]
+        assert got["daf_1"] == pytest.approx(crossing.daf[0], rel=1e-9)
+        assert got["flight_fraction"] == pytest.approx(crossing.flight_fraction, abs=1e-12)
+        assert got["lost_contact"] == crossing.lost_contact
+        assert got["outside_validity"] == crossing.outside_validity
+    with pytest.raises(ValueError, match="vehicle wheelbase 8.5344 m"):
+        studies.run(studies.grid(bridge, trucks["hs20"], studies.FlatProfile(30.0, 0.05), 20.0,
+                                 5.0), "serial")  # fmt: skip

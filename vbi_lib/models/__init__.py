@@ -10,6 +10,11 @@ and its default time step, and no model module imports another:
 * :mod:`~vbi_lib.models.modal`: ``"modal"``, N exact beam modes of any layout of spans,
   Newmark average acceleration.
 
+Each model integrates any vehicle of :mod:`vbi_lib.vehicles` with its general kernel
+(:mod:`~vbi_lib.models.coordinate_kernel`, :mod:`~vbi_lib.models.modal_kernel`; shared axle
+bookkeeping and event location in :mod:`~vbi_lib.models.axles`); the study's sprung mass
+keeps each model's compiled sprung-mass kernel.
+
 Results are :class:`~vbi_lib.models.results.Crossing` (a subclass per model) and
 :class:`~vbi_lib.models.results.BatchResult`; responses at sections, computed after the run
 (:mod:`~vbi_lib.models.sections`), are :class:`~vbi_lib.models.sections.SectionResponse`.

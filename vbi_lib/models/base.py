@@ -5,16 +5,21 @@ from one model to the next: its compiled kernel, the default time step it needs 
 static deflection its DAF divides by.  Everything else is here, written once:
 
 * the checks of a crossing's inputs (:func:`check_crossing`);
-* the node grid (:func:`node_grid`): every profile sample, the bridge ends and the interior
-  supports are nodes, so the road is a straight line within a step and the coefficients
-  switch only at nodes; gaps longer than ``speed * dt`` are subdivided evenly; each step
-  knows the span it is on (any number of spans);
+* the node grid (:func:`node_grid`): the vehicle's position is that of its first axle;
+  every profile sample under every axle, every axle's arrival at the bridge ends and the
+  interior supports are nodes, so the road under each axle is a straight line within a step
+  and the coefficients switch only at nodes; gaps longer than ``speed * dt`` are subdivided
+  evenly; each step knows the span each axle is on (any number of spans).  The road under
+  a tyre is the profile averaged over its footprint
+  (:mod:`vbi_lib.vehicles.footprint`), precomputed once per crossing at the profile's
+  stations;
 * broadcasting of the batch arguments (:func:`broadcast`);
 * the refinement of the midspan peaks inside a step (:func:`downward_peak`, from the cubic
   Hermite interpolant of the displacement and its rate at the step's ends);
 * the bookkeeping of the contact force on the bridge (:func:`track_contact`): its largest and
   smallest values and the time the tyre would spend in tension, the check of the study's
-  assumption that the tyre never leaves the road.
+  assumption that the tyre never leaves the road; with several axles the worst axle counts
+  (its force over its static load), and unilateral tyres add the time in flight.
 
 Every kernel fills one *summary* vector per crossing with the layout of the ``S_*``
 constants below, so the driver turns any model's output into a result the same way.  The
@@ -36,7 +41,8 @@ from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
 from ..units import g as GRAVITY
-from ..vehicles import Vehicle
+from ..vehicles import Vehicle, VehicleSystem, as_system
+from ..vehicles.footprint import footprint_average
 
 #: ``omega * dt`` of the default time step.
 DEFAULT_OMEGA_DT = 0.1
@@ -46,35 +52,40 @@ P_MASS, P_STIFFNESS, P_DAMPING, P_GRAVITY, P_SPEED, P_START, P_SPAN = range(7)
 P_COUNT = 7
 
 # summary vector of one crossing, filled by every kernel
+# (several axles: the contact forces are those of the worst axle, P_a / W_a times the weight)
 S_PEAK = 0  #: largest downward midspan deflection of span 1 (S_PEAK + 1: span 2) [m]
 PEAK_SLOTS = 2  #: spans whose peaks the summary keeps (the others: from the histories)
 S_MAX_FORCE = 2  #: largest contact force on the bridge [N]
 S_MAX_AT = 3  #: station where it occurs [m]
 S_MIN_FORCE = 4  #: smallest contact force on the bridge [N]
-S_TENSION_TIME = 5  #: time on the bridge with the contact force below zero [s]
-S_BRIDGE_TIME = 6  #: time on the bridge [s]
-SUMMARY_SIZE = 7
+S_TENSION_TIME = 5  #: time on the bridge with a bilateral contact force below zero [s]
+S_BRIDGE_TIME = 6  #: time on the bridge (any axle on it) [s]
+S_FLIGHT_TIME = 7  #: time on the bridge with a unilateral tyre off the road [s]
+SUMMARY_SIZE = 8
 
 
 # ---------------------------------------------------------------------------- inputs
 def check_crossing(
-    bridge: Bridge, vehicle: Vehicle, profile: Profile, speed: float, bridge_start: float
+    bridge: Bridge, vehicle: object, profile: Profile, speed: float, bridge_start: float
 ) -> tuple[float, float]:
     """Check the five inputs every crossing has; return ``speed`` and ``bridge_start`` as floats.
+
+    The whole vehicle starts on the approach (its last axle at the profile's first station,
+    its first axle ``wheelbase`` ahead) and the run ends when its last axle leaves the bridge,
+    so the profile must reach ``wheelbase`` beyond the bridge.
 
     Raises
     ------
     TypeError
-        ``bridge``, ``vehicle`` or ``profile`` is not a :class:`~vbi_lib.Bridge`,
-        :class:`~vbi_lib.Vehicle` or :class:`~vbi_lib.Profile`.
+        ``bridge``, ``vehicle`` or ``profile`` is not a :class:`~vbi_lib.Bridge`, one of the
+        library's vehicles (:mod:`vbi_lib.vehicles`) or a :class:`~vbi_lib.Profile`.
     ValueError
         A speed that is not a positive number, a station that is not finite, or a profile that
         does not cover the approach and the bridge.
     """
     if not isinstance(bridge, Bridge):
         raise TypeError(f"bridge must be a vbi.Bridge, got {type(bridge).__name__}")
-    if not isinstance(vehicle, Vehicle):
-        raise TypeError(f"vehicle must be a vbi.Vehicle, got {type(vehicle).__name__}")
+    wheelbase = as_system(vehicle).wheelbase
     if not isinstance(profile, Profile):
         raise TypeError(f"profile must be a vbi.Profile, got {type(profile).__name__}")
     speed = check.positive("speed", speed)
@@ -90,6 +101,18 @@ def check_crossing(
             f"the profile (stations {profile.start:g} to {profile.end:g} m) does not cover the "
             f"approach and the bridge (stations {profile.start:g} to {end:g} m with "
             f"bridge_start={bridge_start:g} m); extend the profile or move the bridge"
+        )
+    tolerance = 1e-9 * max(1.0, abs(end) + wheelbase)
+    if wheelbase > 0 and (
+        bridge_start - wheelbase < profile.start - tolerance
+        or end + wheelbase > profile.end + tolerance
+    ):
+        raise ValueError(
+            f"a vehicle with a wheelbase of {wheelbase:g} m starts wholly on the approach and "
+            f"ends with its last axle off the bridge: the profile (stations {profile.start:g} "
+            f"to {profile.end:g} m) must run from {bridge_start - wheelbase:g} m or earlier to "
+            f"{end + wheelbase:g} m or later with bridge_start={bridge_start:g} m; extend the "
+            "profile or move the bridge"
         )
     return speed, bridge_start
 
@@ -110,13 +133,18 @@ def broadcast(args: dict[str, Any], caller: str) -> tuple[int, dict[str, list]]:
 
 
 def parameters(
-    vehicle: Vehicle, speed: float, bridge_start: float, span: float, extra: int = 0
+    vehicle: object, speed: float, bridge_start: float, span: float, extra: int = 0
 ) -> np.ndarray:
-    """The kernel's parameter vector: the ``P_*`` entries, then ``extra`` for the model."""
+    """The kernel's parameter vector: the ``P_*`` entries, then ``extra`` for the model.
+
+    The sprung-mass entries are NaN for vehicles other than :class:`~vbi_lib.Vehicle`
+    (their kernels read the vehicle's :class:`~vbi_lib.vehicles.VehicleSystem` instead).
+    """
     params = np.zeros(P_COUNT + extra)
-    params[P_MASS] = vehicle.mass
-    params[P_STIFFNESS] = vehicle.stiffness
-    params[P_DAMPING] = vehicle.damping
+    sprung = isinstance(vehicle, Vehicle)
+    params[P_MASS] = vehicle.mass if sprung else np.nan
+    params[P_STIFFNESS] = vehicle.stiffness if sprung else np.nan
+    params[P_DAMPING] = vehicle.damping if sprung else np.nan
     params[P_GRAVITY] = GRAVITY
     params[P_SPEED] = speed
     params[P_START] = bridge_start
@@ -129,28 +157,51 @@ def parameters(
 class Grid:
     """Nodes of one crossing: stations [m], road elevations [m] and the span of each step.
 
-    ``span_of_step[k]`` is 0 off the bridge, else the span (1, 2, ...) the wheel is on from
-    node ``k`` to node ``k + 1``; it has one entry per node (the last unused), so that batches
-    slice nodes and steps with the same offsets.  ``dt_max`` is the longest step [s].
+    ``x`` is the station of the vehicle's first axle.  ``span_of_step[k]`` is 0 off the
+    bridge, else the span (1, 2, ...) the first axle is on from node ``k`` to node ``k + 1``;
+    it has one entry per node (the last unused), so that batches slice nodes and steps with
+    the same offsets.  ``elevation`` is the road under the first axle; ``road`` and
+    ``axle_span``, shape ``(n_axles, n_nodes)``, give them for every axle (the road as its
+    tyre sees it).  ``dt_max`` is the longest step [s].
     """
 
     x: np.ndarray
     elevation: np.ndarray
     span_of_step: np.ndarray
     dt_max: float
+    road: np.ndarray
+    axle_span: np.ndarray
 
 
 def node_grid(
-    bridge: Bridge, profile: Profile, speed: float, bridge_start: float, dt: float, stop: float
+    bridge: Bridge,
+    profile: Profile,
+    speed: float,
+    bridge_start: float,
+    dt: float,
+    stop: float,
+    vehicle: VehicleSystem | None = None,
 ) -> Grid:
-    """Nodes: every profile sample before ``stop``, the bridge ends and supports, subdivided.
+    """Nodes from the first axle's start to ``stop``, subdivided to steps of ``speed * dt``.
 
-    A gap between two of those points longer than ``speed * dt`` is cut into equal steps no
-    longer than that.
+    The first axle starts ``wheelbase`` after the profile's first station (the last axle on
+    it).  Nodes: every profile sample under every axle, the bridge ends and supports under
+    every axle.  A gap between two of those points longer than ``speed * dt`` is cut into
+    equal steps no longer than that.  ``vehicle`` (a :class:`~vbi_lib.vehicles.VehicleSystem`)
+    gives the axles' offsets and footprints; ``None`` is one axle with no footprint.
     """
+    offsets = np.zeros(1) if vehicle is None else vehicle.offsets
+    footprints = np.zeros(1) if vehicle is None else vehicle.footprint
+    first = profile.start + float(offsets.max())
     supports = bridge_start + np.array(bridge.supports)
-    inside = profile.x[(profile.x > profile.start) & (profile.x < stop)]
-    points = np.union1d(np.concatenate(([profile.start], inside, supports)), [stop])
+    if offsets.size == 1:  # one axle: the samples themselves
+        shifted, below = profile.x, supports
+    else:
+        shifted = (profile.x[None, :] + offsets[:, None]).ravel()
+        below = (supports[None, :] + offsets[:, None]).ravel()
+    inside = shifted[(shifted > first) & (shifted < stop)]
+    below = below[below >= first]
+    points = np.union1d(np.concatenate(([first], inside, below)), [stop])
     points = points[points <= stop]
     gaps = np.diff(points)
     keep = np.concatenate(([True], gaps > 1e-12 * max(1.0, abs(stop))))
@@ -161,43 +212,58 @@ def node_grid(
     widths = np.repeat(gaps / pieces, pieces)
     within = np.arange(pieces.sum()) - np.repeat(np.cumsum(pieces) - pieces, pieces)
     x = np.append(starts + within * widths, points[-1])
-    elevation = np.interp(x, profile.x, profile.elevation)
-    middle = 0.5 * (x[:-1] + x[1:]) - bridge_start
-    span_of_step = np.zeros(x.size, dtype=np.int64)
-    span_of_step[:-1] = np.where(
-        (middle > 0) & (middle < bridge.length),
-        np.searchsorted(np.array(bridge.supports), middle, side="right"),
-        0,
-    )
-    return Grid(x, elevation, span_of_step, float((widths.max() if widths.size else 0) / speed))
+    seen: dict[float, np.ndarray] = {0.0: profile.elevation}
+    span_edges = np.array(bridge.supports)
+    road = np.empty((offsets.size, x.size))
+    axle_span = np.zeros((offsets.size, x.size), dtype=np.int64)
+    for a, (offset, footprint) in enumerate(zip(offsets, footprints, strict=True)):
+        if footprint not in seen:
+            seen[footprint] = footprint_average(profile.x, profile.elevation, footprint)
+        road[a] = np.interp(x - offset, profile.x, seen[footprint])
+        middle = 0.5 * (x[:-1] + x[1:]) - offset - bridge_start
+        axle_span[a, :-1] = np.where(
+            (middle > 0) & (middle < bridge.length),
+            np.searchsorted(span_edges, middle, side="right"),
+            0,
+        )
+    dt_max = float((widths.max() if widths.size else 0) / speed)
+    return Grid(x, road[0], axle_span[0], dt_max, road, axle_span)
 
 
 # ---------------------------------------------------------------------------- kernel helpers
 @numba.njit(cache=True)
 def hermite_min(a0, a1, d0, d1, h):
-    """Smallest value inside a step of the cubic Hermite interpolant (values a, rates d)."""
+    """Smallest value inside a step of the cubic Hermite interpolant (values a, rates d).
+
+    The cubic is written in the change ``a1 - a0`` and its stationary points are found with
+    the cancellation-free form of the quadratic formula, so the result is as accurate as
+    the data when the cubic is nearly a parabola.
+    """
     m0 = h * d0
     m1 = h * d1
-    c3 = 2.0 * a0 + m0 - 2.0 * a1 + m1
-    c2 = -3.0 * a0 - 2.0 * m0 + 3.0 * a1 - m1
+    rise = a1 - a0
+    c3 = m0 + m1 - 2.0 * rise
+    c2 = 3.0 * rise - 2.0 * m0 - m1
     c1 = m0
     best = min(a0, a1)
     qa = 3.0 * c3
     qb = 2.0 * c2
     qc = c1
-    if abs(qa) < 1e-300:
-        if abs(qb) > 1e-300:
-            t = -qc / qb
-            if 0.0 < t < 1.0:
-                best = min(best, ((c3 * t + c2) * t + c1) * t + a0)
-        return best
     disc = qb * qb - 4.0 * qa * qc
     if disc < 0.0:
         return best
-    root = math.sqrt(disc)
-    for t in ((-qb - root) / (2.0 * qa), (-qb + root) / (2.0 * qa)):
+    q = -0.5 * (qb + math.copysign(math.sqrt(disc), qb))
+    for k in range(2):
+        if k == 0:
+            if qa == 0.0:
+                continue
+            t = q / qa
+        else:
+            if q == 0.0:
+                continue
+            t = qc / q
         if 0.0 < t < 1.0:
-            best = min(best, ((c3 * t + c2) * t + c1) * t + a0)
+            best = min(best, a0 + ((c3 * t + c2) * t + c1) * t)
     return best
 
 
@@ -224,6 +290,7 @@ def start_summary(summary, n_spans):
     summary[S_MIN_FORCE] = np.inf
     summary[S_TENSION_TIME] = 0.0
     summary[S_BRIDGE_TIME] = 0.0
+    summary[S_FLIGHT_TIME] = 0.0
 
 
 @numba.njit(cache=True)
@@ -277,7 +344,7 @@ class CrossingModel:
     Attributes
     ----------
     name
-        The key of the model in :data:`vbi_lib.models.MODELS`.
+        The key of the model in :data:`vbi_lib.models.driver.MODELS`.
     description
         One line for listings: the bridge model and the integrator.
     result_type
@@ -291,7 +358,7 @@ class CrossingModel:
     def __init__(
         self,
         bridge: Bridge,
-        vehicle: Vehicle,
+        vehicle: object,
         speed: float,
         bridge_start: float,
         *,
@@ -301,6 +368,7 @@ class CrossingModel:
     ) -> None:
         self.bridge = bridge
         self.vehicle = vehicle
+        self.system = as_system(vehicle)
         self.speed = speed
         self.bridge_start = bridge_start
         self.coupled = coupled
@@ -311,7 +379,11 @@ class CrossingModel:
         raise NotImplementedError
 
     def static_deflection(self) -> float:
-        """The static midspan deflection under the vehicle's weight that the DAF divides by [m]."""
+        """The static midspan deflection the DAF divides by [m].
+
+        The largest midspan deflection under the vehicle's static axle loads crawling across
+        the bridge (the study's definition for reference models), as the model computes it.
+        """
         raise NotImplementedError
 
     def span_static_deflections(self) -> np.ndarray:
@@ -337,8 +409,9 @@ class CrossingModel:
     def integrate(self, grid: Grid) -> tuple[np.ndarray, np.ndarray, dict[str, Any], str]:
         """Run one crossing over ``grid`` keeping its histories.
 
-        Returns the summary vector, the contact force at every node [N], the model's own
-        result fields (including ``vehicle_displacement``, ``vehicle_velocity`` and
+        Returns the summary vector, the contact force of every axle at every node
+        ``(n_nodes, n_axles)`` [N], the model's own result fields (including
+        ``dof_displacement``, ``dof_velocity`` ``(n_nodes, n_dofs)`` and
         ``midspan_displacement``) and a note on the steps taken.
         """
         raise NotImplementedError

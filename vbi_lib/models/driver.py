@@ -14,11 +14,12 @@ import numpy as np
 from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
-from ..validity import ContactLossWarning, contact_note
-from ..vehicles import Vehicle
+from ..validity import ContactLossWarning, contact_note, flight_note
+from ..vehicles import as_system
 from .base import (
     PEAK_SLOTS,
     S_BRIDGE_TIME,
+    S_FLIGHT_TIME,
     S_MAX_AT,
     S_MAX_FORCE,
     S_MIN_FORCE,
@@ -50,21 +51,35 @@ def _model(model: object) -> type[CrossingModel]:
     return MODELS[model]
 
 
-def _contact(summary: np.ndarray, weight: float) -> tuple[float, float]:
-    """Smallest contact force over the weight, and the fraction of the time in tension."""
+def _contact(summary: np.ndarray, weight: float, unilateral: object = False) -> tuple:
+    """Smallest contact force over the weight, fractions of the time in tension and in flight.
+
+    The flight time is read only for vehicles with a unilateral contact (``unilateral``).
+    """
     bridge_time = summary[..., S_BRIDGE_TIME]
-    fraction = np.divide(
-        summary[..., S_TENSION_TIME],
-        bridge_time,
-        out=np.zeros_like(bridge_time),
-        where=bridge_time > 0,
-    )
-    return summary[..., S_MIN_FORCE] / weight, fraction
+    if summary.ndim == 1:  # one crossing: plain numbers
+        on = bridge_time > 0
+
+        def fraction(column: int) -> float:
+            return float(summary[column] / bridge_time) if on else 0.0
+
+    else:
+
+        def fraction(column: int) -> np.ndarray:
+            return np.divide(
+                summary[:, column],
+                bridge_time,
+                out=np.zeros_like(bridge_time),
+                where=bridge_time > 0,
+            )
+
+    flight = np.where(unilateral, fraction(S_FLIGHT_TIME), 0.0)
+    return summary[..., S_MIN_FORCE] / weight, fraction(S_TENSION_TIME), flight
 
 
 def simulate(
     bridge: Bridge,
-    vehicle: Vehicle,
+    vehicle: object,
     profile: Profile,
     speed: float,
     bridge_start: float,
@@ -76,15 +91,20 @@ def simulate(
     dt: float | None = None,
     free_vibration: float = 0.0,
 ) -> Crossing:
-    """Simulate one crossing of a sprung-mass truck over a bridge.
+    """Simulate one crossing of a vehicle over a bridge.
 
-    The truck starts at ``profile.x[0]`` at rest in static equilibrium, drives at constant
-    ``speed`` and the run ends when it leaves the bridge (plus ``free_vibration`` seconds).
+    The vehicle starts with its last axle at ``profile.x[0]``, at rest in static equilibrium,
+    drives at constant ``speed`` and the run ends when its last axle leaves the bridge (plus
+    ``free_vibration`` seconds).  Positions in the result are those of its first axle.
 
     Parameters
     ----------
-    bridge, vehicle, profile
-        The beam, the sprung mass and the road (stations and elevations in metres).
+    bridge, profile
+        The beam and the road (stations and elevations in metres).
+    vehicle
+        Any vehicle of :mod:`vbi_lib.vehicles`: the study's sprung mass
+        (:class:`~vbi_lib.Vehicle`), a :class:`~vbi_lib.QuarterCar`, a multi-axle truck,
+        a :class:`~vbi_lib.vehicles.Convoy` or a :class:`~vbi_lib.vehicles.VehicleSystem`.
     speed
         Vehicle speed [m/s].
     bridge_start
@@ -123,8 +143,10 @@ def simulate(
     Warns
     -----
     ContactLossWarning
-        The contact force became tensile on the bridge: the result is outside the model's
-        validity (also in ``notes`` and ``lost_contact``).
+        A bilateral contact force became tensile on the bridge: the result is outside the
+        model's validity (also in ``notes`` and ``lost_contact``).  A unilateral tyre that
+        leaves the road is modelled, not a loss of validity: it is stated in ``notes`` and
+        ``flight_fraction``, without a warning.
 
     Examples
     --------
@@ -140,6 +162,7 @@ def simulate(
     array([1.04])
     """
     kind = _model(model)
+    system = as_system(vehicle)
     speed, bridge_start = check_crossing(bridge, vehicle, profile, speed, bridge_start)
     coupled = check.flag("coupled", coupled)
     convective = check.flag("convective", convective)
@@ -152,12 +175,14 @@ def simulate(
         notes.append(note)
     else:
         dt = check.positive("dt", dt)
-    stop = bridge_start + bridge.length + speed * free_vibration
-    grid = node_grid(bridge, profile, speed, bridge_start, dt, stop)
+    stop = bridge_start + bridge.length + system.wheelbase + speed * free_vibration
+    grid = node_grid(bridge, profile, speed, bridge_start, dt, stop, vehicle=system)
     summary, contact, fields, note = setup.integrate(grid)
     notes.append(note)
     static = setup.static_deflection()
-    min_ratio, tension = _contact(summary, vehicle.weight)
+    min_ratio, tension, flight = _contact(summary, system.weight, system.has_unilateral)
+    if flight > 0:
+        notes.append(flight_note(float(flight)))
     if min_ratio < 0:
         text = contact_note(float(min_ratio), float(tension))
         notes.append(text)
@@ -170,7 +195,10 @@ def simulate(
         bridge_start=bridge_start,
         time=(grid.x - grid.x[0]) / speed,
         position=grid.x,
-        contact_force=contact,
+        vehicle_displacement=fields["dof_displacement"][:, 0],
+        vehicle_velocity=fields["dof_velocity"][:, 0],
+        contact_force=contact.sum(axis=1),
+        axle_contact_force=contact,
         span_of_step=grid.span_of_step,
         daf=setup.span_peaks(summary, fields, grid) / setup.span_static_deflections(),
         static_deflection=static,
@@ -179,6 +207,7 @@ def simulate(
         convective=convective,
         min_contact_force_ratio=float(min_ratio),
         tension_fraction=float(tension),
+        flight_fraction=float(flight),
         notes=tuple(notes),
         **fields,
     )
@@ -186,7 +215,7 @@ def simulate(
 
 def simulate_many(
     bridges: Bridge | list[Bridge],
-    vehicles: Vehicle | list[Vehicle],
+    vehicles: object | list,
     profiles: Profile | list[Profile],
     speeds: float | list[float] | np.ndarray,
     bridge_starts: float | list[float] | np.ndarray,
@@ -201,8 +230,9 @@ def simulate_many(
 
     Every argument but ``model`` and ``dt`` is one value or a list; lists must share one
     length ``n`` and single values are repeated.  Results equal :func:`simulate` crossing by
-    crossing (no histories are kept).  Bridges of up to two spans run in parallel in the
-    compiled batch kernel; a bridge of three or more spans (``model="modal"``) runs one
+    crossing (no histories are kept).  Batches of the study's sprung mass run on each
+    model's compiled sprung-mass kernel; any other vehicle on the general kernel, one
+    crossing per parallel task.  A bridge of three or more spans (``model="modal"``) runs one
     crossing at a time, its span peaks taken from the histories.
 
     Returns
@@ -260,9 +290,12 @@ def simulate_many(
         except (TypeError, ValueError) as exc:
             raise type(exc)(f"crossing {i}: {exc}") from None
         step = setup.default_time_step()[0] if dt is None else dt
-        key = (id(profile), bridge.supports, speed, start, step)
+        system = setup.system
+        axles = (tuple(system.offsets), tuple(system.footprint))
+        key = (id(profile), bridge.supports, speed, start, step, axles)
         if key not in cache:
-            cache[key] = node_grid(bridge, profile, speed, start, step, start + bridge.length)
+            stop = start + bridge.length + system.wheelbase
+            cache[key] = node_grid(bridge, profile, speed, start, step, stop, vehicle=system)
         setups.append(setup)
         grids.append(cache[key])
     wide = [i for i, s in enumerate(setups) if s.bridge.n_spans > PEAK_SLOTS]
@@ -277,13 +310,13 @@ def simulate_many(
         summary, _, fields, _ = setups[i].integrate(grids[i])
         summaries[i] = summary
         peaks[i, : setups[i].bridge.n_spans] = setups[i].span_peaks(summary, fields, grids[i])
-    weights = np.array([s.vehicle.weight for s in setups])
+    weights = np.array([s.system.weight for s in setups])
     statics = np.full(peaks.shape, np.nan)
     for i, s in enumerate(setups):
         statics[i, : s.bridge.n_spans] = s.span_static_deflections()
     daf = peaks / statics
-
-    min_ratio, tension = _contact(summaries, weights)
+    unilateral = np.array([s.system.has_unilateral for s in setups])
+    min_ratio, tension, flight = _contact(summaries, weights, unilateral)
     lost = int((min_ratio < 0).sum())
     if lost:
         worst = int(np.argmin(min_ratio))
@@ -302,5 +335,6 @@ def simulate_many(
         peak_contact_position=summaries[:, S_MAX_AT],
         min_contact_force_ratio=min_ratio,
         tension_fraction=tension,
+        flight_fraction=flight,
         dt=np.array([g.dt_max for g in grids]),
     )

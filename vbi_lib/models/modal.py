@@ -2,7 +2,7 @@ r"""A many-mode reference model: the truck on the bridge's first N exact Euler-B
 
 The study's model (:mod:`vbi_lib.models.one_coordinate`) bends the beam in one assumed
 shape.  Here the beam deflects in its first ``N`` exact free-vibration modes
-(:func:`vbi_lib.beam_modes`), :math:`u_b(x, t) = \sum_n \phi_n(x)\, q_n(t)`, each with its own
+(:func:`vbi_lib.modes`), :math:`u_b(x, t) = \sum_n \phi_n(x)\, q_n(t)`, each with its own
 frequency :math:`\omega_n` and the bridge's damping ratio :math:`\zeta_b` (modal damping, as in
 a modal finite-element analysis).  The sprung mass couples to the modes exactly as to the one
 coordinate of the study's model (:math:`\psi z_b` becomes :math:`\sum \phi_n q_n`):
@@ -29,29 +29,41 @@ profile samples and of the coupling where the wheel leaves the bridge are honour
 Every profile sample is a node; the default step also resolves the vehicle and the lowest
 bridge modes (:func:`default_time_step`).
 
+Any vehicle
+-----------
+Every vehicle of :mod:`vbi_lib.vehicles` is integrated by the general kernel of
+:mod:`~vbi_lib.models.modal_kernel` (the equations above are its one-axle case).  The
+study's sprung mass (:class:`~vbi_lib.Vehicle`) keeps the compiled kernel below, single
+crossings and batches (twice as fast with few modes); the general kernel reproduces it to
+1e-14 (a vehicle's ``.system`` runs through the general kernel; the tests compare them).
+
 Static deflection and DAF
 -------------------------
-The model's static deflection is the largest static midspan deflection under the weight over
-all load positions, from the same N modes (the crawl run of a finite-element study;
-:func:`vbi_lib.beam_modes.largest_static_deflection`), and the DAF of span ``j`` divides the
-largest downward midspan deflection while the wheel is on span ``j`` by it.  On other layouts
-than one span or two equal spans, the spans differ in stiffness and each span's DAF divides
-by its own largest static midspan deflection (``Crossing.static_deflection`` is then the
-largest of them).  Moments, shears and displacements at any section, each with its own
-static counterpart, come from :meth:`~vbi_lib.models.results.Crossing.sections`.
+The model's static deflection is the largest static midspan deflection under the vehicle's
+static axle loads over all its positions, from the same N modes (the crawl run of a
+finite-element study): the modal influence line of each midspan summed over the axles
+(:func:`vbi_lib.modes.largest_static_deflection` for one axle).  The DAF of span ``j``
+divides the largest downward midspan deflection while an axle is on span ``j`` by it.  On
+other layouts than one span or two equal spans, the spans differ in stiffness and each
+span's DAF divides by its own largest static midspan deflection (``Crossing.static_deflection``
+is then the largest of them).  Moments, shears and displacements at any section, each with
+its own static counterpart, come from :meth:`~vbi_lib.models.results.Crossing.sections`.
 
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numba
 import numpy as np
 
-from ..beam_modes import BeamModes, beam_modes, largest_static_deflection, shape_values
 from ..bridges import Bridge
-from ..vehicles import Vehicle
+from ..modes import BeamModes, beam_modes, largest_static_deflection, shape_values
+from ..vehicles import Vehicle, as_system
+from . import modal_kernel
+from .axles import event_log, largest_over_positions, logged_events, vehicle_vector
 from .base import (
     DEFAULT_OMEGA_DT,
     P_DAMPING,
@@ -74,12 +86,13 @@ from .base import (
 from .results import Crossing
 
 
-def default_time_step(bridge: Bridge, vehicle: Vehicle, modes: int) -> float:
+def default_time_step(bridge: Bridge, vehicle: object, modes: int) -> float:
     """Largest default step [s]: ``0.1 / omega`` of the vehicle and the first two modes.
 
-    Higher modes respond almost statically to the truck and the average-acceleration rule
-    keeps them stable at any step, so they do not set the step; the dt convergence study in
-    the validation chapter shows the DAF settled at this step.
+    ``omega`` of the vehicle is its highest natural frequency on a rigid road (the axle hop
+    of a tyred vehicle).  Higher modes respond almost statically to the truck and the
+    average-acceleration rule keeps them stable at any step, so they do not set the step;
+    the dt convergence study in the validation chapter shows the DAF settled at this step.
 
     Examples
     --------
@@ -89,8 +102,52 @@ def default_time_step(bridge: Bridge, vehicle: Vehicle, modes: int) -> float:
     1.612
     """
     basis = beam_modes(bridge, modes)
-    omega = max(vehicle.circular_frequency, float(basis.omega[: min(2, basis.count)].max()))
+    highest = float(as_system(vehicle).circular_frequencies.max())
+    omega = max(highest, float(basis.omega[: min(2, basis.count)].max()))
     return DEFAULT_OMEGA_DT / omega
+
+
+@lru_cache(maxsize=256)
+def _axle_group_static(bridge: Bridge, modes: int, offsets: tuple, loads: tuple) -> tuple:
+    """Largest midspan deflection of each span under the axle loads at their worst position."""
+    basis = beam_modes(bridge, modes)
+    weights = basis.shape(np.array(bridge.midspans)) / basis.omega**2
+    offsets_arr = np.array(offsets)
+    loads_arr = np.array(loads)
+
+    def deflection(front: np.ndarray, span: int) -> np.ndarray:
+        xi = front[:, None] - offsets_arr[None, :]
+        on = (xi >= 0.0) & (xi <= bridge.length)
+        values = np.zeros(front.size)
+        for a in range(offsets_arr.size):
+            rows = np.flatnonzero(on[:, a])
+            if rows.size:
+                values[rows] += loads_arr[a] * (basis.shape(xi[rows, a]) @ weights[span])
+        return values
+
+    last = bridge.length + float(offsets_arr.max())
+    return tuple(
+        largest_over_positions(lambda f, j=j: deflection(f, j), 0.0, last)
+        for j in range(bridge.n_spans)
+    )
+
+
+def span_static_deflections(bridge: Bridge, vehicle: object, modes: int) -> np.ndarray:
+    """The N-mode beam's largest static midspan deflection of each span under the axle loads [m].
+
+    One axle: :func:`~vbi_lib.modes.largest_static_deflection` times the weight; several:
+    the modal influence lines of the midspans summed over the axles, at the group's worst
+    position for each span.
+    """
+    s = as_system(vehicle)
+    if s.n_axles == 1:
+        return np.array(largest_static_deflection(bridge, modes)) * s.weight
+    return np.array(_axle_group_static(bridge, modes, tuple(s.offsets), tuple(s.static_loads)))
+
+
+def static_deflection(bridge: Bridge, vehicle: object, modes: int) -> float:
+    """The largest of :func:`span_static_deflections` [m]: the crawl run's static deflection."""
+    return float(span_static_deflections(bridge, vehicle, modes).max())
 
 
 # ---------------------------------------------------------------------------- kernel
@@ -291,7 +348,7 @@ class ModalCrossing(Crossing):
     Attributes
     ----------
     modes
-        The :class:`~vbi_lib.beam_modes.BeamModes` used.
+        The :class:`~vbi_lib.modes.BeamModes` used.
     modal_coordinates, modal_velocities
         ``q_n`` and ``dq_n/dt``, shape ``(n_time, N)`` [kg^1/2 m, kg^1/2 m/s].
     """
@@ -320,7 +377,7 @@ def check_modes(modes: object) -> int:
 
 
 class Modal(CrossingModel):
-    """The sprung mass on the bridge's first N exact beam modes; Newmark average acceleration."""
+    """Any vehicle on the bridge's first N exact beam modes; Newmark average acceleration."""
 
     name = "modal"
     description = "N exact Euler-Bernoulli modes (any spans); Newmark average acceleration"
@@ -339,10 +396,13 @@ class Modal(CrossingModel):
         return dt, f"dt picked as {DEFAULT_OMEGA_DT} / omega = {dt * 1e3:.3f} ms"
 
     def static_deflection(self) -> float:
-        return max(largest_static_deflection(self.bridge, self.count)) * self.vehicle.weight
+        return static_deflection(self.bridge, self.system, self.count)
+
+    def _vector(self, grid: Grid) -> np.ndarray:
+        return vehicle_vector(self.system, self.system.static_position(grid.road[:, 0]))
 
     def span_static_deflections(self) -> np.ndarray:
-        each = np.array(largest_static_deflection(self.bridge, self.count)) * self.vehicle.weight
+        each = span_static_deflections(self.bridge, self.system, self.count)
         if self.bridge.study_layout:  # the spans are alike: one value, as the study's model
             return np.full(each.size, each.max())
         return each
@@ -359,6 +419,38 @@ class Modal(CrossingModel):
         return np.full(self.count, self.bridge.damping_ratio)
 
     def integrate(self, grid: Grid):  # noqa: ANN201
+        if isinstance(self.vehicle, Vehicle):
+            return self._integrate_sprung_mass(grid)
+        n = grid.x.size
+        s = self.system
+        q = np.empty((n, self.count))
+        qd = np.empty((n, self.count))
+        veh = np.empty((n, 2 * s.n_dofs))
+        contact = np.empty((n, s.n_axles))
+        summary = np.empty(SUMMARY_SIZE)
+        events = event_log(n)
+        b = self.basis
+        # writable copies: the batch passes writable arrays, and numba compiles one kernel
+        modal_kernel.kernel(grid.x, grid.road, grid.axle_span, self.params,
+                            np.array(b.supports), np.array(b.wavenumber),
+                            np.array(b.coefficients), np.array(b.omega),
+                            self._zeta(), self.phi_mid, self.coupled, self.convective,
+                            self._vector(grid), s.n_dofs, s.n_axles, q, qd, veh, contact,
+                            summary, *events)  # fmt: skip
+        fields = {
+            "modes": b,
+            "dof_displacement": veh[:, : s.n_dofs],
+            "dof_velocity": veh[:, s.n_dofs :],
+            "modal_coordinates": q,
+            "modal_velocities": qd,
+            "contact_events": logged_events(*events),
+            "midspan_displacement": q @ self.phi_mid.T,
+        }
+        note = f"{n - 1} average-acceleration steps, largest {grid.dt_max * 1e3:.3f} ms"
+        return summary, contact, fields, note
+
+    def _integrate_sprung_mass(self, grid: Grid):  # noqa: ANN202
+        """The study's sprung mass on its own compiled kernel."""
         n = grid.x.size
         q = np.empty((n, self.count))
         qd = np.empty((n, self.count))
@@ -371,17 +463,19 @@ class Modal(CrossingModel):
                 self.convective, q, qd, veh, contact, summary)  # fmt: skip
         fields = {
             "modes": b,
-            "vehicle_displacement": veh[:, 0],
-            "vehicle_velocity": veh[:, 1],
+            "dof_displacement": veh[:, 0:1],
+            "dof_velocity": veh[:, 1:2],
             "modal_coordinates": q,
             "modal_velocities": qd,
             "midspan_displacement": q @ self.phi_mid.T,
         }
         note = f"{n - 1} average-acceleration steps, largest {grid.dt_max * 1e3:.3f} ms"
-        return summary, contact, fields, note
+        return summary, contact[:, None], fields, note
 
     @classmethod
     def integrate_many(cls, models, grids):  # noqa: ANN001, ANN206
+        if not all(isinstance(m.vehicle, Vehicle) for m in models):
+            return cls._integrate_many_general(models, grids)
         n = len(models)
         counts = [m.count for m in models]
         offsets = np.zeros(n + 1, dtype=np.int64)
@@ -413,6 +507,51 @@ class Modal(CrossingModel):
             np.array([m.bridge.n_spans for m in models], dtype=np.int64),
             np.array([m.coupled for m in models], dtype=np.bool_),
             np.array([m.convective for m in models], dtype=np.bool_),
+            summaries,
+        )
+        return summaries
+
+    @classmethod
+    def _integrate_many_general(cls, models, grids):  # noqa: ANN001, ANN206
+        """Any vehicles: the general kernel, one crossing per parallel task."""
+        n = len(models)
+        counts = [m.count for m in models]
+
+        def offsets_of(sizes: list[int]) -> np.ndarray:
+            return np.concatenate(([0], np.cumsum(sizes))).astype(np.int64)
+
+        most = max(m.bridge.n_spans for m in models)
+        phi_mid = np.full((n, max(2, most), max(counts)), np.nan)
+        supports = np.full((n, most + 1), np.nan)
+        coef = np.zeros((sum(counts), most, 4))
+        first = 0
+        for i, m in enumerate(models):
+            phi_mid[i, : m.bridge.n_spans, : m.count] = m.phi_mid
+            supports[i, : m.bridge.n_spans + 1] = m.basis.supports
+            coef[first : first + m.count, : m.bridge.n_spans] = m.basis.coefficients
+            first += m.count
+        vectors = [m._vector(g) for m, g in zip(models, grids, strict=True)]
+        summaries = np.full((n, SUMMARY_SIZE), np.nan)
+        modal_kernel.batch_kernel(
+            offsets_of([g.x.size for g in grids]),
+            np.concatenate([g.x for g in grids]),
+            np.concatenate([g.road.ravel() for g in grids]),
+            np.concatenate([g.axle_span.ravel() for g in grids]),
+            offsets_of([g.road.size for g in grids]),
+            np.array([m.params for m in models]),
+            offsets_of(counts),
+            supports,
+            np.concatenate([m.basis.wavenumber for m in models]),
+            coef,
+            np.concatenate([m.basis.omega for m in models]),
+            np.concatenate([m._zeta() for m in models]),
+            phi_mid,
+            np.array([m.bridge.n_spans for m in models], dtype=np.int64),
+            np.array([m.coupled for m in models], dtype=np.bool_),
+            np.array([m.convective for m in models], dtype=np.bool_),
+            np.concatenate(vectors),
+            offsets_of([v.size for v in vectors]),
+            np.array([[m.system.n_dofs, m.system.n_axles] for m in models], dtype=np.int64),
             summaries,
         )
         return summaries

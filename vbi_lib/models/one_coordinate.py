@@ -18,12 +18,26 @@ The decoupled variant (92)-(99) drops the bridge from :math:`F`.  Written as
 :math:`\dot z = A(x_v) z + B(x_v) U + f(x_v)`, the matrices are built in one place,
 :func:`state_matrices`.
 
+Any vehicle
+-----------
+Every vehicle of :mod:`vbi_lib.vehicles` (several axles, tyres that can leave the road) is
+integrated by the general kernel of :mod:`~vbi_lib.models.coordinate_kernel`, of which the
+equations above are the one-axle case.  The study's sprung mass (:class:`~vbi_lib.Vehicle`)
+keeps the compiled 4x4 kernel below, single crossings and batches: it is 1.5 times faster,
+and the general kernel reproduces it to 1e-14 (its ``.system`` runs through the general
+kernel; the tests compare the two).  With
+several axles the DAF divides by the largest static midspan deflection of the one-shape
+beam under the axle loads at their worst position, :math:`\max_x |\sum_a \psi(x_a) W_a|
+/ k^*` (one axle: :math:`W / k^*`, (90)-(91)).
+
 Integration
 -----------
-Classical fourth-order Runge-Kutta on the shared node grid (every profile sample, the bridge
-ends and the interior support), subdivided so that :math:`\omega_{max} \Delta t \le 0.1`
-(``omega_max`` the largest eigenvalue modulus of :math:`A`).  Between nodes the profile is a
-straight line, so the input is exact on each step; the coefficients switch only at nodes.
+Classical fourth-order Runge-Kutta on the shared node grid (every profile sample under
+every axle, the bridge ends and the interior support), subdivided so that
+:math:`\omega_{max} \Delta t \le 0.1` (``omega_max`` the largest eigenvalue modulus of
+the state matrix with every contact on, the axles sampled together along the span).
+Between nodes the profile is a straight line, so the input is exact on each step; the
+coefficients switch only at nodes.
 RK4 is explicit, cheap (four evaluations of a 4x4 system) and, at
 :math:`\omega \Delta t \le 0.1`, has a phase error of order :math:`(\omega\Delta t)^4/120` per
 radian: far below what the DAF can resolve.  Forward Euler (the study's choice) adds energy
@@ -40,9 +54,11 @@ from dataclasses import dataclass
 import numba
 import numpy as np
 
-from ..beam_modes import BeamModes, beam_modes
 from ..bridges import Bridge
-from ..vehicles import Vehicle
+from ..modes import BeamModes, beam_modes
+from ..vehicles import Vehicle, VehicleSystem, as_system
+from . import coordinate_kernel
+from .axles import event_log, largest_over_positions, logged_events, vehicle_vector
 from .base import (
     DEFAULT_OMEGA_DT,
     P_COUNT,
@@ -301,25 +317,112 @@ def _batch_kernel(offsets, x, elevation, span_of_step, params, n_spans, coupled,
 
 
 # ---------------------------------------------------------------------------- model
+def system_matrix(
+    bridge: Bridge,
+    vehicle: object,
+    speed: float,
+    psi: float | np.ndarray,
+    dpsi: float | np.ndarray = 0.0,
+    coupled: bool = True,
+    convective: bool = True,
+) -> np.ndarray:
+    """State matrix of any vehicle on the one-coordinate beam, every contact on the road.
+
+    States ``(u, du/dt, z_b, dz_b/dt)``, shape ``(2n + 2, 2n + 2)``; ``psi`` and ``dpsi``
+    are the shape function and its slope at each axle (one value for all).  For the study's
+    sprung mass it is :func:`state_matrices`' ``A``.
+    """
+    s = as_system(vehicle)
+    return _couple(_vehicle_block(bridge, s), bridge, s, speed, psi, dpsi, coupled, convective)
+
+
+def _couple(block, bridge, s, speed, psi, dpsi, coupled, convective) -> np.ndarray:  # noqa: ANN001
+    """:func:`system_matrix` from the entries that do not depend on the axles' positions."""
+    n = s.n_dofs
+    A = block.copy()
+    psi = np.broadcast_to(np.asarray(psi, dtype=float), (s.n_axles,))
+    dpsi = np.broadcast_to(np.asarray(dpsi, dtype=float), (s.n_axles,))
+    cpl = 1.0 if coupled else 0.0
+    eps = 1.0 if convective else 0.0
+    k, c = s.contact_stiffness, s.contact_damping
+    # the dynamic contact forces F = -k E u - c E v + Fz z_b + Fzd dz_b/dt
+    Fz = cpl * (k * psi + c * eps * speed * dpsi)
+    Fzd = cpl * c * psi
+    ME = s.mass_inverse @ s.contact.T
+    mb = bridge.generalized_mass
+    A[n : 2 * n, 2 * n] = ME @ Fz
+    A[n : 2 * n, 2 * n + 1] = ME @ Fzd
+    A[2 * n + 1, :n] = (psi * k) @ s.contact / mb
+    A[2 * n + 1, n : 2 * n] = (psi * c) @ s.contact / mb
+    A[2 * n + 1, 2 * n] = -(bridge.generalized_stiffness + psi @ Fz) / mb
+    A[2 * n + 1, 2 * n + 1] = -(bridge.generalized_damping + psi @ Fzd) / mb
+    return A
+
+
+def _vehicle_block(bridge: Bridge, s: VehicleSystem) -> np.ndarray:
+    """The state matrix's entries that do not depend on where the axles are."""
+    n = s.n_dofs
+    E = s.contact
+    A = np.zeros((2 * n + 2, 2 * n + 2))
+    A[:n, n : 2 * n] = np.eye(n)
+    A[n : 2 * n, :n] = -s.mass_inverse @ s.road_stiffness
+    A[n : 2 * n, n : 2 * n] = -s.mass_inverse @ (s.damping + E.T @ (s.contact_damping[:, None] * E))
+    A[2 * n, 2 * n + 1] = 1.0
+    return A
+
+
 def highest_circular_frequency(
-    bridge: Bridge, vehicle: Vehicle, speed: float, coupled: bool = True, convective: bool = True
+    bridge: Bridge, vehicle: object, speed: float, coupled: bool = True, convective: bool = True
 ) -> float:
-    """Largest eigenvalue modulus of ``A`` over the wheel positions [rad/s]."""
-    largest = 0.0
+    """Largest eigenvalue modulus of the state matrix over the wheel positions [rad/s].
+
+    The axles are put together at five positions from the support to midspan (the coupling
+    is strongest when they all are at midspan).
+    """
+    s = as_system(vehicle)
+    block = None if _is_sprung_mass(vehicle) else _vehicle_block(bridge, s)
+    stack = []
     for psi in np.linspace(0.0, 1.0, 5):
         dpsi = math.pi / bridge.span * math.sqrt(max(0.0, 1.0 - psi**2))
-        A, _, _ = state_matrices(bridge, vehicle, speed, psi, dpsi, coupled, convective)
-        largest = max(largest, float(np.abs(np.linalg.eigvals(A)).max()))
-    return largest
+        if block is None:  # the study's matrices (51)-(58), compiled
+            stack.append(state_matrices(bridge, vehicle, speed, psi, dpsi, coupled, convective)[0])
+        else:
+            stack.append(_couple(block, bridge, s, speed, psi, dpsi, coupled, convective))
+    return float(np.abs(np.linalg.eigvals(np.array(stack))).max())
+
+
+def static_deflection(bridge: Bridge, vehicle: object) -> float:
+    """The one-shape beam's largest static midspan deflection under the axle loads [m].
+
+    ``max over positions of |sum_a psi(x_a) W_a| / k*`` (axles off the bridge carry
+    nothing); for one axle ``W / k*``, the study's (90)-(91).
+    """
+    s = as_system(vehicle)
+    if s.n_axles == 1:
+        return bridge.static_deflection(s.weight)
+    wave = math.pi / bridge.span
+
+    def deflection(front: np.ndarray) -> np.ndarray:
+        xi = front[:, None] - s.offsets[None, :]
+        on = (xi >= 0.0) & (xi <= bridge.length)
+        return np.abs(np.where(on, np.sin(wave * xi), 0.0) @ s.static_loads)
+
+    load = largest_over_positions(deflection, 0.0, bridge.length + s.wheelbase)
+    return load / bridge.generalized_stiffness
 
 
 def default_time_step(
-    bridge: Bridge, vehicle: Vehicle, speed: float, coupled: bool = True, convective: bool = True
+    bridge: Bridge, vehicle: object, speed: float, coupled: bool = True, convective: bool = True
 ) -> float:
     """``DEFAULT_OMEGA_DT / omega_max``: the largest step the model takes by default [s]."""
     return DEFAULT_OMEGA_DT / highest_circular_frequency(
         bridge, vehicle, speed, coupled, convective
     )
+
+
+def _is_sprung_mass(vehicle: object) -> bool:
+    """Whether the compiled 4x4 batch kernel of the study's sprung mass applies."""
+    return isinstance(vehicle, Vehicle)
 
 
 @dataclass(frozen=True, eq=False, kw_only=True, repr=False)
@@ -347,7 +450,7 @@ class OneCoordinateCrossing(Crossing):
 
 
 class OneCoordinate(CrossingModel):
-    """The study's model: one sprung mass on the one-coordinate beam, RK4 (33)-(99)."""
+    """The study's model: any vehicle on the one-coordinate beam, RK4 (33)-(99)."""
 
     name = "one-coordinate"
     description = "the study's beam with one coordinate psi z_b (1 or 2 spans); RK4"
@@ -377,9 +480,39 @@ class OneCoordinate(CrossingModel):
         )
 
     def static_deflection(self) -> float:
-        return self.bridge.static_deflection(self.vehicle.weight)
+        return static_deflection(self.bridge, self.system)
+
+    def _vector(self, grid: Grid) -> np.ndarray:
+        return vehicle_vector(self.system, self.system.static_position(grid.road[:, 0]))
 
     def integrate(self, grid: Grid):  # noqa: ANN201
+        if _is_sprung_mass(self.vehicle):
+            return self._integrate_sprung_mass(grid)
+        n = grid.x.size
+        s: VehicleSystem = self.system
+        states = np.empty((n, 2 * s.n_dofs + 2))
+        contact = np.empty((n, s.n_axles))
+        summary = np.empty(SUMMARY_SIZE)
+        events = event_log(n)
+        coordinate_kernel.kernel(grid.x, grid.road, grid.axle_span, self.params,
+                                 self.bridge.n_spans, self.coupled, self.convective,
+                                 self._vector(grid), s.n_dofs, s.n_axles, states, contact,
+                                 summary, *events)  # fmt: skip
+        signs = np.array([1.0, -1.0][: self.bridge.n_spans])
+        z = 2 * s.n_dofs
+        fields = {
+            "dof_displacement": states[:, : s.n_dofs],
+            "dof_velocity": states[:, s.n_dofs : z],
+            "bridge_coordinate": states[:, z],
+            "bridge_velocity": states[:, z + 1],
+            "midspan_displacement": states[:, z : z + 1] * signs,
+            "contact_events": logged_events(*events),
+        }
+        note = f"{n - 1} RK4 steps, largest {grid.dt_max * 1e3:.3f} ms"
+        return summary, contact, fields, note
+
+    def _integrate_sprung_mass(self, grid: Grid):  # noqa: ANN202
+        """The study's sprung mass on its own compiled 4x4 kernel."""
         n = grid.x.size
         states = np.empty((n, 4))
         contact = np.empty(n)
@@ -388,17 +521,19 @@ class OneCoordinate(CrossingModel):
                 self.coupled, self.convective, states, contact, summary)  # fmt: skip
         signs = np.array([1.0, -1.0][: self.bridge.n_spans])
         fields = {
-            "vehicle_displacement": states[:, 0],
-            "vehicle_velocity": states[:, 1],
+            "dof_displacement": states[:, 0:1],
+            "dof_velocity": states[:, 1:2],
             "bridge_coordinate": states[:, 2],
             "bridge_velocity": states[:, 3],
             "midspan_displacement": states[:, 2:3] * signs,
         }
         note = f"{n - 1} RK4 steps, largest {grid.dt_max * 1e3:.3f} ms"
-        return summary, contact, fields, note
+        return summary, contact[:, None], fields, note
 
     @classmethod
     def integrate_many(cls, models, grids):  # noqa: ANN001, ANN206
+        if not all(_is_sprung_mass(m.vehicle) for m in models):
+            return cls._integrate_many_general(models, grids)
         n = len(models)
         offsets = np.zeros(n + 1, dtype=np.int64)
         offsets[1:] = np.cumsum([g.x.size for g in grids])
@@ -412,6 +547,35 @@ class OneCoordinate(CrossingModel):
             np.array([m.bridge.n_spans for m in models], dtype=np.int64),
             np.array([m.coupled for m in models], dtype=np.bool_),
             np.array([m.convective for m in models], dtype=np.bool_),
+            summaries,
+        )
+        return summaries
+
+    @classmethod
+    def _integrate_many_general(cls, models, grids):  # noqa: ANN001, ANN206
+        """Any vehicles: the general kernel, one crossing per parallel task."""
+        n = len(models)
+        offsets = np.zeros(n + 1, dtype=np.int64)
+        offsets[1:] = np.cumsum([g.x.size for g in grids])
+        road_offsets = np.zeros(n + 1, dtype=np.int64)
+        road_offsets[1:] = np.cumsum([g.road.size for g in grids])
+        vectors = [m._vector(g) for m, g in zip(models, grids, strict=True)]
+        vec_offsets = np.zeros(n + 1, dtype=np.int64)
+        vec_offsets[1:] = np.cumsum([v.size for v in vectors])
+        summaries = np.full((n, SUMMARY_SIZE), np.nan)
+        coordinate_kernel.batch_kernel(
+            offsets,
+            np.concatenate([g.x for g in grids]),
+            np.concatenate([g.road.ravel() for g in grids]),
+            np.concatenate([g.axle_span.ravel() for g in grids]),
+            road_offsets,
+            np.array([m.params for m in models]),
+            np.array([m.bridge.n_spans for m in models], dtype=np.int64),
+            np.array([m.coupled for m in models], dtype=np.bool_),
+            np.array([m.convective for m in models], dtype=np.bool_),
+            np.concatenate(vectors),
+            vec_offsets,
+            np.array([[m.system.n_dofs, m.system.n_axles] for m in models], dtype=np.int64),
             summaries,
         )
         return summaries

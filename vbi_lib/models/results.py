@@ -19,15 +19,15 @@ the run from the modal coordinates by the mode-acceleration method
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
 
 from .. import display
-from ..beam_modes import BeamModes
 from ..bridges import Bridge
-from ..vehicles import Vehicle
+from ..modes import BeamModes
+from ..vehicles import VehicleSystem, as_system
 from .sections import SectionResponse, check_method, section_history, static_counterpart
 
 __all__ = ["BatchResult", "Crossing"]
@@ -58,23 +58,32 @@ class Crossing:
     Attributes
     ----------
     model
-        The model's name (a key of :data:`vbi_lib.models.MODELS`).
+        The model's name (a key of :data:`vbi_lib.models.driver.MODELS`).
     bridge, vehicle
-        The inputs.
+        The inputs (any vehicle of :mod:`vbi_lib.vehicles`).
     speed
         Vehicle speed [m/s].
     bridge_start
         Station of the first support [m].
     time, position
-        Time [s] from the start and wheel station [m] at every node, shape ``(n_time,)``.
+        Time [s] from the start and station of the first axle [m] at every node, shape
+        ``(n_time,)`` (the wheel of the study's sprung mass).
+    dof_displacement, dof_velocity
+        ``(n_time, n_dofs)``: every degree of freedom of the vehicle from its static position
+        [m or rad] and its rate, in the order of ``vehicle.system.dof_names``.
     vehicle_displacement, vehicle_velocity
-        ``u_v`` [m] from the static position and its rate [m/s].
+        The first degree of freedom, ``(n_time,)``: ``u_v`` [m] of the study's sprung mass,
+        the sprung mass of a quarter car, the bounce of a rigid truck.
     midspan_displacement
         ``(n_time, n_spans)`` midspan displacement of each span [m].
+    axle_contact_force
+        ``(n_time, n_axles)``: force each axle presses on the road [N] (negative: tension of
+        a bilateral contact; 0: a tyre in flight).
     contact_force
-        Force pressing on the road ``R = m_v g + F`` [N] (negative: tension).
+        Their sum ``(n_time,)`` [N]; for the study's sprung mass ``R = m_v g + F``.
     span_of_step
-        Per node: 0 while the wheel is off the bridge, else the span of the step from the node.
+        Per node: 0 while the first axle is off the bridge, else the span of the step from
+        the node.
     daf
         Per span, the largest downward midspan deflection while the wheel is on that span over
         the model's static deflection (88)-(91) (on layouts other than one span or two equal
@@ -88,24 +97,34 @@ class Crossing:
     coupled, convective
         The options the crossing ran with.
     min_contact_force_ratio
-        Smallest contact force while on the bridge over the weight: below 0 the tyre would
-        have to pull the road down (the model's contact assumption failed).
+        Smallest contact force of an axle on the bridge over its static load (the worst
+        axle): below 0 a bilateral contact would have to pull the road down (the model's
+        contact assumption failed); 0 when a tyre flew.
     tension_fraction
-        Fraction of the time on the bridge with a tensile contact force.
+        Fraction of the time on the bridge (any axle on it) with a tensile contact force.
+    flight_fraction
+        Fraction of the time on the bridge with a unilateral tyre off the road (modelled).
+    contact_events
+        ``(n_events, 4)``: every take-off and landing of a tyre, located inside its step:
+        time [s], axle (0-based), +1 take-off or -1 landing, axle station [m]; see
+        :meth:`flights`.
     notes
         Sentences on how the crossing was run and where it left the model's validity.
     """
 
     model: str
     bridge: Bridge
-    vehicle: Vehicle
+    vehicle: object
     speed: float
     bridge_start: float
     time: np.ndarray
     position: np.ndarray
+    dof_displacement: np.ndarray
+    dof_velocity: np.ndarray
     vehicle_displacement: np.ndarray
     vehicle_velocity: np.ndarray
     midspan_displacement: np.ndarray
+    axle_contact_force: np.ndarray
     contact_force: np.ndarray
     span_of_step: np.ndarray
     daf: np.ndarray
@@ -115,28 +134,88 @@ class Crossing:
     convective: bool = True
     min_contact_force_ratio: float = np.nan
     tension_fraction: float = 0.0
+    flight_fraction: float = 0.0
+    contact_events: np.ndarray = field(default_factory=lambda: np.empty((0, 4)))
     notes: tuple[str, ...] = ()
 
     # ------------------------------------------------------------------ views
+    def flights(self) -> pd.DataFrame:
+        """Each flight of a tyre: axle (1-based), take-off and landing time [s] and station
+        [m], and duration [s]; NaN landing when the run ended in the air.
+
+        Examples
+        --------
+        >>> import vbi_lib as vbi
+        >>> car = vbi.QuarterCar.from_frequencies(4e3, 500.0, 1.5, 12.0, footprint=0.0)
+        >>> road = vbi.Profile.step(40.0, 0.01, position=10.0, height=0.05)
+        >>> run = vbi.simulate(vbi.Bridge(10.0, 1, 1e10, 5e3), car, road, 20.0, 25.0)
+        >>> len(run.flights()) > 0 and bool((run.flights()["duration [s]"] > 0).all())
+        True
+        """
+        rows = []
+        events = self.contact_events
+        for axle in np.unique(events[:, 1]).astype(int):
+            own = events[events[:, 1] == axle]
+            for i in np.flatnonzero(own[:, 2] > 0):
+                land = own[i + 1] if i + 1 < len(own) else np.full(4, np.nan)
+                rows.append((axle + 1, own[i, 0], land[0], own[i, 3], land[3]))
+        table = pd.DataFrame(
+            rows,
+            columns=["axle", "take-off [s]", "landing [s]", "take-off station [m]",
+                     "landing station [m]"],
+        )  # fmt: skip
+        table["duration [s]"] = table["landing [s]"] - table["take-off [s]"]
+        return table
+
     @property
-    def on_bridge(self) -> np.ndarray:
-        """True at nodes where the wheel is on the bridge (ends included), shape ``(n_time,)``."""
-        rel = self.position - self.bridge_start
+    def system(self) -> VehicleSystem:
+        """The vehicle as a :class:`~vbi_lib.vehicles.VehicleSystem` (its axles and dofs)."""
+        return as_system(self.vehicle)
+
+    @property
+    def weight(self) -> float:
+        """The vehicle's weight, the sum of its static axle loads [N]."""
+        return self.system.weight
+
+    @property
+    def axle_position(self) -> np.ndarray:
+        """Station of every axle [m], shape ``(n_time, n_axles)``."""
+        return self.position[:, None] - self.system.offsets[None, :]
+
+    @property
+    def axle_on_bridge(self) -> np.ndarray:
+        """Whether each axle is on the bridge (ends included), shape ``(n_time, n_axles)``."""
+        rel = self.axle_position - self.bridge_start
         return (rel >= -1e-12) & (rel <= self.bridge.length + 1e-12)
 
     @property
+    def on_bridge(self) -> np.ndarray:
+        """True at nodes where an axle is on the bridge (ends included), shape ``(n_time,)``."""
+        return self.axle_on_bridge.any(axis=1)
+
+    @property
     def contact_force_ratio(self) -> np.ndarray:
-        """Contact force over the vehicle's weight at every node [-]."""
-        return self.contact_force / self.vehicle.weight
+        """Total contact force over the vehicle's weight at every node [-]."""
+        return self.contact_force / self.weight
+
+    @property
+    def axle_contact_force_ratio(self) -> np.ndarray:
+        """Each axle's contact force over its static load, ``(n_time, n_axles)`` [-]."""
+        return self.axle_contact_force / self.system.static_loads[None, :]
 
     @property
     def contact_force_amplification(self) -> float:
-        """Largest contact force while on the bridge over the vehicle's weight [-]."""
-        return float(self.contact_force[self.on_bridge].max() / self.vehicle.weight)
+        """Largest contact force of an axle on the bridge over its static load [-]."""
+        return float(self.axle_contact_force_ratio[self.axle_on_bridge].max())
 
     @property
     def lost_contact(self) -> bool:
-        """Whether the contact force became tensile on the bridge (outside validity)."""
+        """Whether an axle lost contact on the bridge: tension (bilateral) or flight (tyre)."""
+        return bool(self.min_contact_force_ratio < 0.0 or self.flight_fraction > 0.0)
+
+    @property
+    def outside_validity(self) -> bool:
+        """Whether a bilateral contact force became tensile: the model's assumption failed."""
         return bool(self.min_contact_force_ratio < 0.0)
 
     # ------------------------------------------------------------------ sections
@@ -145,9 +224,14 @@ class Crossing:
         raise NotImplementedError(f"{self.model!r} crossings do not give section responses")
 
     def _axles(self) -> tuple[np.ndarray, np.ndarray]:
-        """Downward loads on the bridge [N] and stations from its start [m], ``(n_time, 1)``."""
-        loads = np.where(self.on_bridge, self.contact_force, 0.0)
-        return loads[:, None], (self.position - self.bridge_start)[:, None]
+        """Downward axle loads on the bridge [N] and their stations from its start [m].
+
+        Both ``(n_time, n_axles)``; an axle off the bridge carries no load on it.
+        """
+        offsets = as_system(self.vehicle).offsets
+        positions = (self.position - self.bridge_start)[:, None] - offsets[None, :]
+        on = (positions >= -1e-12) & (positions <= self.bridge.length + 1e-12)
+        return np.where(on, self.axle_contact_force, 0.0), positions
 
     def _section(self, x: float | np.ndarray, effect: str, method: str) -> np.ndarray:
         sections = _stations(x)
@@ -220,9 +304,8 @@ class Crossing:
         method = check_method(method)
         sections = _stations(x)
         modes, _ = self.modal_history()
-        static = static_counterpart(
-            modes, sections, np.array([self.vehicle.weight]), np.zeros(1), method
-        )
+        system = as_system(self.vehicle)
+        static = static_counterpart(modes, sections, system.static_loads, system.offsets, method)
         plural = "s" if modes.count > 1 else ""
         notes = [
             f"section responses by the {method} method with {modes.count} mode{plural}; "
@@ -249,9 +332,10 @@ class Crossing:
     def to_dataframe(self) -> pd.DataFrame:
         """The histories as a table, one row per node, in the display units.
 
-        Columns: time, wheel position from the bridge start, each span's midspan
-        displacement, the vehicle's displacement, the contact force and its ratio to the
-        weight.
+        Columns: time, wheel (first axle) position from the bridge start, each span's
+        midspan displacement, the vehicle's displacement, the contact force and its ratio to
+        the weight; for vehicles with more degrees of freedom or axles, one column per
+        further degree of freedom and, per axle, its contact force and ratio to its load.
         """
         columns = {
             display.label("time", "time"): self.time,
@@ -266,10 +350,26 @@ class Crossing:
         columns[display.label("vehicle displacement", "deflection")] = display.value(
             self.vehicle_displacement, "deflection"
         )
+        system = self.system
+        for i in range(1, system.n_dofs):
+            name = f"{system.dof_names[i]} displacement"
+            if system.dof_units[i] == "rad":
+                columns[f"{name} [rad]"] = self.dof_displacement[:, i]
+            else:
+                columns[display.label(name, "deflection")] = display.value(
+                    self.dof_displacement[:, i], "deflection"
+                )
         columns[display.label("contact force", "force")] = display.value(
             self.contact_force, "force"
         )
         columns["contact force / weight [-]"] = self.contact_force_ratio
+        if system.n_axles > 1:
+            ratios = self.axle_contact_force_ratio
+            for a in range(system.n_axles):
+                columns[display.label(f"axle {a + 1} contact force", "force")] = display.value(
+                    self.axle_contact_force[:, a], "force"
+                )
+                columns[f"axle {a + 1} contact force / load [-]"] = ratios[:, a]
         return pd.DataFrame(columns)
 
     def plot(self, ax=None, kind: str = "displacement", span: int | None = None):  # noqa: ANN001, ANN201
@@ -282,8 +382,9 @@ class Crossing:
         kind
             ``"displacement"``: midspan displacement over the static deflection (a DAF scale);
             ``"deflection"``: midspan displacement in display units; ``"contact"``: contact
-            force over the weight, with the zero line where contact is lost;
-            ``"vehicle"``: the vehicle's displacement.
+            force over the weight (each axle's over its load when there are several), with
+            the zero line where contact is lost; ``"vehicle"``: the vehicle's displacements
+            (its translational degrees of freedom).
         span
             Only this span (1-based) for the midspan kinds; all spans by default.
 
@@ -314,11 +415,26 @@ class Crossing:
             if self.bridge.n_spans > 1:
                 ax.legend(loc="best")
         elif kind == "contact":
-            ax.plot(x, self.contact_force_ratio, color="C3")
+            system = self.system
+            if system.n_axles == 1:
+                ax.plot(x, self.contact_force_ratio, color="C3")
+            else:
+                for a in range(system.n_axles):
+                    ax.plot(x, self.axle_contact_force_ratio[:, a], label=f"axle {a + 1}")
+                ax.legend(loc="best")
             ax.axhline(0.0, color="k", lw=0.8)
-            ax.set_ylabel("contact force / weight [-]")
+            ax.set_ylabel("contact force / static load [-]")
         else:
-            ax.plot(x, display.value(self.vehicle_displacement, "deflection"), color="C2")
+            system = self.system
+            if system.n_dofs == 1:
+                ax.plot(x, display.value(self.vehicle_displacement, "deflection"), color="C2")
+            else:
+                for i, (name, unit) in enumerate(zip(system.dof_names, system.dof_units,
+                                                     strict=True)):  # fmt: skip
+                    if unit == "m":
+                        y = display.value(self.dof_displacement[:, i], "deflection")
+                        ax.plot(x, y, label=name)
+                ax.legend(loc="best")
             ax.set_ylabel(display.label("vehicle displacement", "deflection"))
         ax.axvspan(0, display.value(self.bridge.length, "length"), color="0.93", zorder=0)
         ax.set_xlabel(display.label("wheel position from the start of the bridge", "length"))
@@ -330,8 +446,10 @@ class Crossing:
             f"{type(self).__name__}({_spans(self.bridge.n_spans)}, "
             f"{display.fmt(self.speed, 'speed')}: DAF {dafs}"
         )
-        if self.lost_contact:
+        if self.outside_validity:
             text += f"; CONTACT LOST (min R/W {self.min_contact_force_ratio:.2f})"
+        if self.flight_fraction > 0:
+            text += f"; tyre off the road {self.flight_fraction:.0%} of the time"
         return text + ")"
 
 
@@ -353,12 +471,14 @@ class BatchResult:
     peak_contact_position
         Station of that force [m], ``(n,)``.
     min_contact_force_ratio
-        Smallest contact force on the bridge over the weight, ``(n,)``; below 0 the crossing
-        left the model's validity (the tyre would pull the road down).
+        Smallest contact force on the bridge over the static load (worst axle), ``(n,)``;
+        below 0 the crossing left the model's validity (the tyre would pull the road down).
     tension_fraction
         Fraction of the time on the bridge with a tensile contact force, ``(n,)``.
     dt
         Largest time step of each crossing [s], ``(n,)``.
+    flight_fraction
+        Fraction of the time on the bridge with a unilateral tyre off the road, ``(n,)``.
     """
 
     model: str
@@ -369,14 +489,24 @@ class BatchResult:
     min_contact_force_ratio: np.ndarray
     tension_fraction: np.ndarray
     dt: np.ndarray
+    flight_fraction: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        if self.flight_fraction is None:
+            object.__setattr__(self, "flight_fraction", np.zeros_like(self.tension_fraction))
 
     def __len__(self) -> int:
         return int(self.speed.size)
 
     @property
-    def lost_contact(self) -> np.ndarray:
-        """Whether each crossing's contact force became tensile on the bridge, ``(n,)``."""
+    def outside_validity(self) -> np.ndarray:
+        """Whether each crossing's bilateral contact force became tensile, ``(n,)``."""
         return self.min_contact_force_ratio < 0.0
+
+    @property
+    def lost_contact(self) -> np.ndarray:
+        """Whether an axle lost contact on the bridge (tension or a tyre's flight), ``(n,)``."""
+        return self.outside_validity | (self.flight_fraction > 0.0)
 
     def to_dataframe(self) -> pd.DataFrame:
         """One row per crossing: speed (display units), DAFs and the contact checks."""
@@ -387,6 +517,7 @@ class BatchResult:
                 "contact force amplification": self.contact_force_amplification,
                 "min contact force ratio": self.min_contact_force_ratio,
                 "tension fraction": self.tension_fraction,
+                "flight fraction": self.flight_fraction,
                 "lost contact": self.lost_contact,
                 display.label("dt", "time"): self.dt,
             }
@@ -405,7 +536,8 @@ class BatchResult:
             _, ax = plt.subplots(figsize=(7, 3.2))
         order = np.argsort(self.speed, kind="stable")
         v = display.value(self.speed[order], "speed")
-        lost = self.lost_contact[order]
+        lost = self.outside_validity[order]
+        flew = self.flight_fraction[order] > 0
         if kind == "daf":
             for j in range(self.daf.shape[1]):
                 y = self.daf[order, j]
@@ -413,6 +545,7 @@ class BatchResult:
                     continue
                 ax.plot(v, y, "o-", ms=3, label=f"span {j + 1}")
                 ax.plot(v[lost], y[lost], "x", color="k", ms=7)
+                ax.plot(v[flew], y[flew], "^", color="0.4", ms=5, mfc="none")
             ax.set_ylabel("DAF [-]")
         else:
             ax.plot(v, self.contact_force_amplification[order], "o-", ms=3, label="largest")
@@ -421,6 +554,8 @@ class BatchResult:
             ax.set_ylabel("contact force / weight [-]")
         if lost.any():
             ax.plot([], [], "x", color="k", label="contact lost (outside validity)")
+        if flew.any():
+            ax.plot([], [], "^", color="0.4", mfc="none", label="a tyre left the road")
         ax.legend(loc="best")
         ax.set_xlabel(display.label("speed", "speed"))
         return ax
@@ -428,7 +563,10 @@ class BatchResult:
     def __repr__(self) -> str:
         worst = np.nanmax(self.daf) if np.isfinite(self.daf).any() else np.nan
         text = f"BatchResult({len(self)} crossings, {self.model}: largest DAF {worst:.3f}"
-        lost = int(self.lost_contact.sum())
+        lost = int(self.outside_validity.sum())
         if lost:
             text += f"; CONTACT LOST in {lost}"
+        flew = int((self.flight_fraction > 0).sum())
+        if flew:
+            text += f"; a tyre left the road in {flew}"
         return text + ")"

@@ -47,7 +47,6 @@ import numpy as np
 import pandas as pd
 
 from .. import display
-from ..beam_modes import BeamModes
 from ..beam_statics import (
     EFFECTS,
     QUANTITY,
@@ -58,6 +57,7 @@ from ..beam_statics import (
     static_envelope,
 )
 from ..bridges import Bridge
+from ..modes import BeamModes
 
 __all__ = ["EFFECTS", "METHODS", "SectionResponse", "section_history", "static_counterpart"]
 

@@ -12,9 +12,10 @@ contact force stayed compressive (the model's validity).
 
 The package is split by job: :mod:`~vbi_lib.studies.recipes` (roads a worker builds),
 :mod:`~vbi_lib.studies.scenarios` (tables: grids, Monte Carlo draws, validation),
-:mod:`~vbi_lib.studies.runner` (the runner and its executors, saving),
-:mod:`~vbi_lib.studies.statistics` (characteristic values, agreement with a reference,
-how many crossings lost contact) and
+:mod:`~vbi_lib.studies.runner` (the runner and its executors), :mod:`~vbi_lib.studies.files`
+(saving results),
+:mod:`~vbi_lib.studies.statistics` (characteristic values, agreement with a reference, how
+many crossings lost contact) and
 :mod:`~vbi_lib.studies.envelopes` (responses at sections: their columns and envelopes,
 ``run(..., sections=[...])`` and :func:`envelope`).
 
@@ -36,14 +37,13 @@ the bridge move back by ``d`` (the study's Figure 2.15.16 slides the road in 5 f
 """
 
 from .envelopes import envelope
+from .files import load, save
 from .recipes import FlatProfile, HarmonicProfile, ISOProfile
 from .runner import (
     DEFAULT_CHUNK_SIZE,
     SERIAL_BELOW,
     default_executor,
-    load,
     run,
-    save,
     shutdown_default_executor,
 )
 from .scenarios import (

@@ -158,6 +158,7 @@ def _build(recipe: Any) -> Profile:
 
 
 def is_recipe(value: object) -> bool:
+    """Whether ``value`` is a profile recipe (it has ``build()`` and ``end``)."""
     return callable(getattr(value, "build", None)) and hasattr(value, "end")
 
 
@@ -169,6 +170,7 @@ def extent(profile: Any) -> tuple[float, float]:
 
 
 def profile_label(profile: Any) -> str:
+    """A short name for a profile or a recipe, for result tables."""
     if isinstance(profile, Profile):
         return profile.name or "profile"
     return str(getattr(profile, "label", type(profile).__name__))

@@ -13,12 +13,10 @@ import concurrent.futures as cf
 import math
 import multiprocessing
 import os
-import tempfile
 import warnings
 from collections.abc import Sequence
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import asdict
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -28,6 +26,7 @@ from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
 from ..validity import ContactLossWarning
+from ..vehicles import Vehicle, as_system
 from .envelopes import SECTION_FIELDS, check_sections, section_columns
 from .recipes import extent, profile_label
 from .scenarios import TAG_PREFIX, _rows, validate
@@ -86,6 +85,7 @@ _SUMMARIES = (
     "peak_contact_position",
     "min_contact_force_ratio",
     "tension_fraction",
+    "flight_fraction",
     "dt",
 )
 
@@ -237,8 +237,11 @@ def _labels(objects: Sequence[Any], kind: str) -> list[str]:
                 else " + ".join(f"{s:g}" for s in obj.spans) + " m"
             )
             out.append(f"{layout}, {obj.first_frequency_hz:.2f} Hz")
-        elif kind == "vehicle":
+        elif kind == "vehicle" and isinstance(obj, Vehicle):
             out.append(f"{obj.mass:.0f} kg, {obj.frequency_hz:.2f} Hz")
+        elif kind == "vehicle":
+            system = as_system(obj)
+            out.append(f"{system.name or type(obj).__name__}, {system.total_mass:.0f} kg")
         else:
             out.append(profile_label(obj))
     return out
@@ -317,17 +320,21 @@ def run(
         Indexed like ``scenarios``.  Inputs as plain columns: the ``*_name`` labels,
         ``bridge_span`` [m], ``bridge_n_spans``, ``bridge_EI`` [N m^2],
         ``bridge_mass_per_length`` [kg/m], ``bridge_damping_ratio``, ``bridge_f1_hz``,
-        ``vehicle_mass`` [kg], ``vehicle_stiffness`` [N/m], ``vehicle_damping`` [N s/m],
-        ``vehicle_f_hz``, ``vehicle_damping_ratio``, ``profile_*`` (the recipe's fields),
+        ``vehicle_mass`` [kg] (the whole vehicle's), ``vehicle_axles``, and for the study's
+        sprung mass ``vehicle_stiffness`` [N/m], ``vehicle_damping`` [N s/m],
+        ``vehicle_f_hz``, ``vehicle_damping_ratio`` (NaN for other vehicles),
+        ``profile_*`` (the recipe's fields),
         ``speed`` [m/s], ``bridge_start``, ``profile_offset`` [m], ``coupled``,
         ``convective``, ``model``, ``modes`` and any ``tag_*`` columns; results: ``daf_1``,
         ``daf_2``, ... (one per span of the longest layout, at least two; NaN beyond a
         bridge's spans), ``daf`` (the largest), ``contact_force_amplification``,
-        ``peak_contact_position`` [m] and ``peak_contact_time`` [s from the start] of the
-        largest contact force on the bridge; the contact checks
-        ``min_contact_force_ratio``, ``tension_fraction`` and ``lost_contact`` (a crossing
-        that lost contact is outside the model's validity; one ``ContactLossWarning`` says how
-        many did); ``dt`` [s] and, on request, ``iri_1``, ``iri_2``.
+        ``peak_contact_position`` [m] and ``peak_contact_time`` [s from the start; one-axle
+        vehicles] of the largest contact force on the bridge; the contact checks
+        ``min_contact_force_ratio`` (worst axle), ``tension_fraction``,
+        ``flight_fraction`` (a tyre off the road, modelled), ``outside_validity`` (a
+        bilateral contact became tensile: outside the model's validity; one
+        ``ContactLossWarning`` says how many did) and ``lost_contact`` (either);
+        ``dt`` [s] and, on request, ``iri_1``, ``iri_2``.
 
     Examples
     --------
@@ -484,12 +491,17 @@ def run(
         "bridge_damping_ratio": [x.damping_ratio for x in bridges],
         "bridge_f1_hz": [x.first_frequency_hz for x in bridges],
     }
+
+    def sprung(name: str) -> list[float]:
+        return [getattr(x, name) if isinstance(x, Vehicle) else np.nan for x in vehicles]
+
     vehicle_cols = {
-        "vehicle_mass": [x.mass for x in vehicles],
-        "vehicle_stiffness": [x.stiffness for x in vehicles],
-        "vehicle_damping": [x.damping for x in vehicles],
-        "vehicle_f_hz": [x.frequency_hz for x in vehicles],
-        "vehicle_damping_ratio": [x.damping_ratio for x in vehicles],
+        "vehicle_mass": [as_system(x).total_mass for x in vehicles],
+        "vehicle_axles": [as_system(x).n_axles for x in vehicles],
+        "vehicle_stiffness": sprung("stiffness"),
+        "vehicle_damping": sprung("damping"),
+        "vehicle_f_hz": sprung("frequency_hz"),
+        "vehicle_damping_ratio": sprung("damping_ratio"),
     }
     for cols, codes in ((bridge_cols, b_code), (vehicle_cols, v_code)):
         for name, values in cols.items():
@@ -516,10 +528,13 @@ def run(
     out["contact_force_amplification"] = summaries["contact_force_amplification"]
     out["peak_contact_position"] = where = summaries["peak_contact_position"]
     starts = np.array([extent(p)[0] for p in profiles])[p_code]
-    out["peak_contact_time"] = (where - starts) / arrays["speed"]
+    one_axle = np.array([as_system(x).n_axles == 1 for x in vehicles])[v_code]
+    out["peak_contact_time"] = np.where(one_axle, (where - starts) / arrays["speed"], np.nan)
     out["min_contact_force_ratio"] = summaries["min_contact_force_ratio"]
     out["tension_fraction"] = summaries["tension_fraction"]
-    out["lost_contact"] = lost = summaries["min_contact_force_ratio"] < 0
+    out["flight_fraction"] = summaries["flight_fraction"]
+    out["outside_validity"] = lost = summaries["min_contact_force_ratio"] < 0
+    out["lost_contact"] = lost | (summaries["flight_fraction"] > 0)
     out["dt"] = summaries["dt"]
     if lost.any():
         warnings.warn(
@@ -538,48 +553,3 @@ def run(
             for name in SECTION_FIELDS:
                 out[f"{name}_{k + 1}"] = per_section[name][:, k]
     return pd.DataFrame(out, index=table.index.copy())
-
-
-# ---------------------------------------------------------------------------- saving
-def save(results: pd.DataFrame, path: str | os.PathLike[str]) -> Path:
-    """Write a results table to ``.parquet`` or ``.csv`` (never a half-written file).
-
-    The table is written to a temporary file beside ``path`` and moved into place.
-
-    Examples
-    --------
-    >>> import pandas as pd, tempfile, os
-    >>> with tempfile.TemporaryDirectory() as d:
-    ...     p = save(pd.DataFrame({"daf": [1.1, 1.2]}), os.path.join(d, "s.csv"))
-    ...     load(p)["daf"].tolist()
-    [1.1, 1.2]
-    """
-    path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix not in (".parquet", ".pq", ".csv"):
-        raise ValueError(f"path={str(path)!r}: save to a '.parquet' or '.csv' file")
-    if not isinstance(results, pd.DataFrame):
-        raise TypeError(f"results must be a pandas.DataFrame, got {type(results).__name__}")
-    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    os.close(handle)
-    try:
-        if suffix == ".csv":
-            results.to_csv(temporary, index=False)
-        else:
-            results.to_parquet(temporary, index=False)
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
-    return path
-
-
-def load(path: str | os.PathLike[str]) -> pd.DataFrame:
-    """Read a table written by :func:`save` (``.parquet`` or ``.csv``)."""
-    path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix == ".csv":
-        return pd.read_csv(path)
-    if suffix in (".parquet", ".pq"):
-        return pd.read_parquet(path)
-    raise ValueError(f"path={str(path)!r}: load a '.parquet' or '.csv' file")

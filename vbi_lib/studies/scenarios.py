@@ -20,7 +20,7 @@ from ..bridges import Bridge
 from ..models import MODELS
 from ..profiles import Profile
 from ..units import ft, slinch
-from ..vehicles import Vehicle
+from ..vehicles import Vehicle, as_system
 from .recipes import ISOProfile, extent, is_recipe
 
 #: Columns a scenario table may have; the first five are required.
@@ -154,7 +154,7 @@ def grid(
         Station(s) of the first support [m].
     **axes
         More axes: ``profile_offsets`` (slide of the road under the bridge [m], >= 0),
-        ``coupled``, ``convective``, ``model`` (a key of :data:`vbi_lib.MODELS`) and
+        ``coupled``, ``convective``, ``model`` (a key of :data:`vbi_lib.models.driver.MODELS`) and
         ``modes`` (the number of beam modes, for ``model="modal"`` only).
 
     Returns
@@ -301,13 +301,18 @@ def validate(scenarios: Any) -> pd.DataFrame:
                 pass
         return out
 
-    kinds = {"bridge": Bridge, "vehicle": Vehicle}
     ok = np.ones(len(table), dtype=bool)
-    for column, kind in kinds.items():
-        wrong = np.array([not isinstance(v, kind) for v in table[column]])
-        if wrong.any():
-            problems.append(f"{_rows(wrong, index)}: {column} is not a vbi.{kind.__name__}")
-            ok &= ~wrong
+    wrong = np.array([not isinstance(v, Bridge) for v in table["bridge"]])
+    if wrong.any():
+        problems.append(f"{_rows(wrong, index)}: bridge is not a vbi.Bridge")
+        ok &= ~wrong
+    wrong = np.array([not _is_vehicle(v) for v in table["vehicle"]])
+    if wrong.any():
+        problems.append(
+            f"{_rows(wrong, index)}: vehicle is not a vbi.Vehicle nor another vehicle of "
+            "vbi.vehicles (QuarterCar, IndependentAxles, RigidTruck, Convoy, VehicleSystem)"
+        )
+        ok &= ~wrong
     wrong = np.array([not (isinstance(p, Profile) or is_recipe(p)) for p in table["profile"]])
     if wrong.any():
         problems.append(
@@ -357,11 +362,15 @@ def validate(scenarios: Any) -> pd.DataFrame:
         rows = np.flatnonzero(ok)
         b_code, b_unique = pd.factorize(table["bridge"].iloc[rows])
         p_code, p_unique = pd.factorize(table["profile"].iloc[rows])
+        v_code, v_unique = pd.factorize(table["vehicle"].iloc[rows])
         lengths = np.array([b.length for b in b_unique])[b_code]
+        wheelbase = np.array([as_system(v).wheelbase for v in v_unique])[v_code]
         extents = np.array([extent(p) for p in p_unique]).reshape(-1, 2)[p_code]
         road_end = extents[:, 1] - offset[rows]
-        end = start[rows] + lengths
-        short = (start[rows] < extents[:, 0]) | (end > road_end + 1e-9 * np.maximum(1, abs(end)))
+        end = start[rows] + lengths + wheelbase
+        short = (start[rows] - wheelbase < extents[:, 0] - 1e-9 * np.maximum(1, abs(end))) | (
+            end > road_end + 1e-9 * np.maximum(1, abs(end))
+        )
         if short.any():
             first = rows[np.flatnonzero(short)[0]]
             k = np.flatnonzero(short)[0]
@@ -371,7 +380,7 @@ def validate(scenarios: Any) -> pd.DataFrame:
                 f"{_rows(mask, index)}: the profile (stations {extents[k, 0]:g} to "
                 f"{extents[k, 1]:g} m) does not cover the approach and the bridge (to station "
                 f"{end[k]:g} m with bridge_start={start[first]:g} m, "
-                f"profile_offset={offset[first]:g} m)"
+                f"profile_offset={offset[first]:g} m, vehicle wheelbase {wheelbase[k]:g} m)"
             )
     if problems:
         raise ValueError("scenario table: " + "; ".join(problems))
@@ -386,12 +395,21 @@ def validate(scenarios: Any) -> pd.DataFrame:
     return table
 
 
+def _is_vehicle(value: object) -> bool:
+    try:
+        as_system(value)
+    except TypeError:
+        return False
+    return True
+
+
 # ---------------------------------------------------------------------------- Monte Carlo
 def _population(name: str, values: Any, kind: type) -> tuple[list[Any], list[str] | None]:
     items, labels = _axis(name, values)
     if not items:
         raise ValueError(f"{name} is empty; give at least one vbi.{kind.__name__}")
-    bad = [i for i, v in enumerate(items) if not isinstance(v, kind)]
+    fits = _is_vehicle if kind is Vehicle else (lambda v: isinstance(v, kind))
+    bad = [i for i, v in enumerate(items) if not fits(v)]
     if bad:
         raise ValueError(f"{name}: items {bad} are not vbi.{kind.__name__} objects")
     return items, labels

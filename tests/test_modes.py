@@ -9,8 +9,8 @@ import pytest
 from problems import flat
 
 import vbi_lib as vbi
-from vbi_lib.beam_modes import beam_modes, propped_cantilever_roots, static_deflection_line
 from vbi_lib.closed_forms import point_load_statics
+from vbi_lib.modes import beam_modes, propped_cantilever_roots, static_deflection_line
 
 
 def test_propped_cantilever_roots_match_published_values() -> None:

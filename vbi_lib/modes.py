@@ -9,7 +9,7 @@ mass-normalised modes,
 
 for a beam continuous over any spans (:meth:`vbi_lib.Bridge.continuous`), computed exactly
 by :mod:`vbi_lib.continuous_beams`.  Two layouts have textbook forms, which the general
-solution reproduces to rounding (``tests/test_beam_modes.py``):
+solution reproduces to rounding (``tests/test_modes.py``):
 
 * one simple span: :math:`\phi_n = \sqrt{2/(\bar m L)}\,\sin(n\pi x/L)`,
   :math:`\omega_n = (n\pi/L)^2\sqrt{EI/\bar m}`;

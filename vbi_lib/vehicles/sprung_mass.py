@@ -12,9 +12,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
-from . import _validation as check
-from .units import g
+from .. import _validation as check
+from ..units import g
+from .system import VehicleSystem
 
 
 @dataclass(frozen=True)
@@ -103,6 +105,25 @@ class Vehicle:
     def weight(self) -> float:
         """Static weight ``m_v g`` [N]."""
         return self.mass * g
+
+    @cached_property
+    def system(self) -> VehicleSystem:
+        """The sprung mass as a :class:`~vbi_lib.vehicles.VehicleSystem`: one degree of freedom,
+        one bilateral contact whose spring and damper are the suspension, no footprint."""
+        return VehicleSystem(
+            mass=[[self.mass]],
+            stiffness=[[0.0]],
+            damping=[[0.0]],
+            contact=[[1.0]],
+            offsets=[0.0],
+            static_loads=[self.weight],
+            contact_stiffness=[self.stiffness],
+            contact_damping=[self.damping],
+            unilateral=[False],
+            footprint=[0.0],
+            dof_names=("sprung mass",),
+            name="sprung mass",
+        )
 
     def __repr__(self) -> str:
         return (

@@ -1,0 +1,55 @@
+"""Saving a study's results: Parquet or CSV, never a half-written file."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import pandas as pd
+
+__all__ = ["load", "save"]
+
+
+def save(results: pd.DataFrame, path: str | os.PathLike[str]) -> Path:
+    """Write a results table to ``.parquet`` or ``.csv`` (never a half-written file).
+
+    The table is written to a temporary file beside ``path`` and moved into place.
+
+    Examples
+    --------
+    >>> import pandas as pd, tempfile, os
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = save(pd.DataFrame({"daf": [1.1, 1.2]}), os.path.join(d, "s.csv"))
+    ...     load(p)["daf"].tolist()
+    [1.1, 1.2]
+    """
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix not in (".parquet", ".pq", ".csv"):
+        raise ValueError(f"path={str(path)!r}: save to a '.parquet' or '.csv' file")
+    if not isinstance(results, pd.DataFrame):
+        raise TypeError(f"results must be a pandas.DataFrame, got {type(results).__name__}")
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(handle)
+    try:
+        if suffix == ".csv":
+            results.to_csv(temporary, index=False)
+        else:
+            results.to_parquet(temporary, index=False)
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def load(path: str | os.PathLike[str]) -> pd.DataFrame:
+    """Read a table written by :func:`save` (``.parquet`` or ``.csv``)."""
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix == ".csv":
+        return pd.read_csv(path)
+    if suffix in (".parquet", ".pq"):
+        return pd.read_parquet(path)
+    raise ValueError(f"path={str(path)!r}: load a '.parquet' or '.csv' file")
