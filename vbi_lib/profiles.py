@@ -202,7 +202,7 @@ class Profile:
 
         The book writes the spectrum as :eq:`study-87` and the sum as :eq:`eq-roads-cosines`.
         A sum of sines :math:`\sum_i \sqrt{2 G_d(n_i) \Delta n}\cos(2\pi n_i (x - x_0) +
-        \varphi_i)` over the frequencies :math:`n_i = i\,\Delta n` inside ``band``, with
+        \theta_i)` over the frequencies :math:`n_i = i\,\Delta n` inside ``band``, with
         phases drawn uniformly from :math:`[0, 2\pi)` by ``numpy.random.default_rng(seed)``.
         :math:`\Delta n = 1 / (N s) \le 1 / \text{length}` (``N`` samples of spacing ``s``
         on a period at least as long as the road) so the road does not repeat, and the sum is
