@@ -8,7 +8,8 @@ velocity ``v dDelta/dx`` is exact on each segment.
 The sampling rule of the study (32): to see a natural frequency ``f_max`` at the slowest
 speed of interest ``v_min``, sample at least every ``S_max = v_min / (2 f_max)``.
 
-Artificial roads follow ISO 8608 (study equation 87): the displacement power spectral density
+Artificial roads follow ISO 8608 (study equation 87, :eq:`study-87` in the book): the
+displacement power spectral density
 
 .. math::
     G_d(n) = G_d(n_0) \left(\frac{n}{n_0}\right)^{-w}, \qquad n_0 = 0.1\ \text{cycle/m},
@@ -279,8 +280,9 @@ class Profile:
     ) -> Profile:
         r"""A random road with the ISO 8608 spectrum ``G_d(n) = c10 (n / 0.1)^-w`` (study 87).
 
+        The book writes the spectrum as :eq:`study-87` and the sum as :eq:`eq-roads-cosines`.
         A sum of sines :math:`\sum_i \sqrt{2 G_d(n_i) \Delta n}\cos(2\pi n_i (x - x_0) +
-        \varphi_i)` over the frequencies :math:`n_i = i\,\Delta n` inside ``band``, with
+        \theta_i)` over the frequencies :math:`n_i = i\,\Delta n` inside ``band``, with
         phases drawn uniformly from :math:`[0, 2\pi)` by ``numpy.random.default_rng(seed)``.
         :math:`\Delta n = 1 / (N s) \le 1 / \text{length}` (``N`` samples of spacing ``s``
         on a period at least as long as the road) so the road does not repeat, and the sum is

@@ -6,11 +6,12 @@ predictor of dynamic amplification (the third, a vehicle-only contact-force metr
 
 **ISO 8608 parameters** (:func:`fit_iso8608`, :func:`profile_spectrum`).  The displacement
 PSD of the road is modelled as :math:`G_d(n) = C_{10} (n / n_0)^{-w}`, :math:`n_0 = 0.1`
-cycle/m (study equation 87).  The one-sided PSD is estimated with Welch's method (Hann
-window, 50 % overlap, each segment detrended with a straight line), averaged over
-1/3-octave bands centred on :math:`0.1 \cdot 2^{k/3}` cycle/m, and a straight line is fitted
-to :math:`\log G_d` against :math:`\log (n / n_0)` (each band weighted by the square root of
-its number of Welch bins), giving :math:`C_{10}` and :math:`w`.
+cycle/m (study equation 87, :eq:`study-87` in the book).  The one-sided PSD is estimated
+with Welch's method (Hann window, 50 % overlap, each segment detrended with a straight
+line), averaged over 1/3-octave bands centred on :math:`0.1 \cdot 2^{k/3}` cycle/m, and a
+straight line is fitted to :math:`\log G_d` against :math:`\log (n / n_0)` (each band
+weighted by the square root of its number of Welch bins), giving :math:`C_{10}` and
+:math:`w`.
 
 **International Roughness Index** (:func:`iri`).  The golden quarter car (per unit sprung
 mass: tyre :math:`k_1 = 653\ s^{-2}`, suspension :math:`k_2 = 63.3\ s^{-2}`, damper

@@ -3,8 +3,8 @@ r"""A vehicle-only predictor of dynamic amplification: the contact force on a ri
 **Contact-force amplification** (:func:`contact_force_amplification`).  The study's
 vehicle-only metric: the truck (a sprung mass) rides the profile on a rigid road, its contact
 force is weighted by a half sine over each span (the span's midspan influence line shape), and
-the peak is divided by the weight.  The sprung mass is driven by a piecewise-linear road, so
-it too is stepped exactly with a matrix exponential.
+the peak is divided by the weight (:eq:`eq-roads-window` in the book).  The sprung mass is
+driven by a piecewise-linear road, so it too is stepped exactly with a matrix exponential.
 
 The study weighed it in its chapter 14 against the DAF of the full model (Figure 2.14.3).
 """
@@ -67,6 +67,7 @@ def quarter_car_contact_force(
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Contact force of a sprung mass riding ``profile`` on a rigid road (decoupled model, 92).
 
+    The book writes the decoupled force as :eq:`study-92`.
     ``m u'' = F``, ``F = k (Delta - u) + c (Delta' - u')`` with the profile linear between
     samples, so over each step the input rate is constant and the step is exact:
     the augmented state ``(u, u', Delta, Delta')`` is advanced with ``exp(M h)``.  The mass

@@ -109,6 +109,7 @@ class HarmonicProfile:
 class ISOProfile:
     """Recipe for an ISO 8608 random road, ``Profile.iso8608(...)`` built in the worker (87).
 
+    The book writes the spectrum as :eq:`study-87`.
     Give either ``c10`` (``G_d(n0)`` at ``n0 = 0.1`` cycle/m [m^3]) or ``iso_class`` (A-H).
     ``seed`` (a whole number >= 0) fixes the random phases, so the same recipe always builds
     the same road.  Checked as :meth:`vbi_lib.Profile.iso8608` checks (``TypeError``,
