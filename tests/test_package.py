@@ -85,3 +85,14 @@ def test_models_never_import_each_other() -> None:
     assert len(models) == len(vbi.MODELS)
     for name in models:
         assert not (GRAPH[name] & (models - {name})), f"{name} imports another model"
+
+
+def test_public_functions_and_classes_have_docstrings() -> None:
+    """The API page documents them (an undocumented public name would be a dead link)."""
+    missing = []
+    for name, path in MODULES.items():
+        for node in ast.parse(path.read_text()).body:
+            if isinstance(node, ast.FunctionDef | ast.ClassDef) and not node.name.startswith("_"):
+                if ast.get_docstring(node) is None:
+                    missing.append(f"{name}.{node.name}")
+    assert not missing, f"public names without a docstring: {missing}"

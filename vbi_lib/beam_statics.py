@@ -249,6 +249,7 @@ class StaticEnvelope:
 
 
 def effect_index(effect: str) -> int:
+    """Position of ``effect`` in :data:`EFFECTS` (``ValueError`` for an unknown effect)."""
     if effect not in EFFECTS:
         raise ValueError(f"effect={effect!r} is not known; use one of {', '.join(EFFECTS)}")
     return EFFECTS.index(effect)
