@@ -37,22 +37,7 @@ ANSI = re.compile(r"\x1b\[|&#0*27;\[|&#x0*1b;\[|\\u001b\[|\\x1b\[", re.I)
 #: content), with that cause and its fix, and whether it appears on every build. An entry
 #: that appears every time must still be found, so fixing its cause fails the test until the
 #: entry is removed; one that depends on the machine's speed is tolerated either way.
-KNOWN_NOISE: dict[tuple[str, str], tuple[str, bool]] = {
-    ("notebooks/07-your-own-bridge.html", "kernel log line"): (
-        "vbi_lib.reports.make_report runs papermill, whose kernel starts over unencrypted "
-        "TCP and logs a warning on stderr; the chapter's kernel captures it into the cell. "
-        "Fix in reports.py: pass config=traitlets.config.Config(KernelManager="
-        "{'transport_encryption': 'auto'}) to papermill.execute_notebook.",
-        True,
-    ),
-    ("notebooks/06-what-drives-amplification.html", "progress bar"): (
-        "studies.run(table) with the default progress=None draws a tqdm bar once a run "
-        "passes 1 s, which happens on a loaded machine (TQDM_DISABLE cannot override the "
-        "explicit disable=). Fix in the chapter: studies.run(..., progress=False), or in "
-        "vbi_lib.studies: no bar by default outside an interactive session.",
-        False,
-    ),
-}
+KNOWN_NOISE: dict[tuple[str, str], tuple[str, bool]] = {}
 
 
 def html_pages(html: Path) -> list[Path]:

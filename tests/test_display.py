@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from vbi_lib import display
@@ -40,3 +41,53 @@ def test_unknown_choices_are_named() -> None:
         display.set_units("metric")
     with pytest.raises(ValueError, match="quantity='lenght'"):
         display.symbol("lenght")
+
+
+# ---------------------------------------------------------------------------- book tables
+def test_table_is_a_numbered_myst_table_with_units_in_its_header() -> None:
+    import pandas as pd
+
+    display.set_units("US")
+    frame = pd.DataFrame(
+        {
+            display.label("span", "length"): display.value(np.array([12.192, 30.48]), "length"),
+            "bridge": ["40 ft | path 1", "100 ft"],
+            "lost contact": [True, False],
+        },
+        index=pd.Index([1, 2], name="row"),
+    )
+    text = display.table(frame, "Two of the study's beams.", "table-two-beams").markdown
+    lines = text.splitlines()
+    assert lines[0] == ":::{table} Two of the study's beams."
+    assert lines[1] == ":name: table-two-beams"
+    assert lines[3] == "| row | span [ft] | bridge | lost contact |"
+    assert lines[4] == "|---:|---:|:---|:---|"  # numbers right, text left
+    assert lines[5] == r"| 1 | 40 | 40 ft \| path 1 | yes |"  # a pipe in a cell is escaped
+    assert lines[6] == "| 2 | 100 | 100 ft | no |"
+    assert lines[-1] == ":::"
+    shown = display.table(frame, "c", "table-x", number_format="{:.2f}", index=False)
+    assert shown.markdown.splitlines()[3] == "| span [ft] | bridge | lost contact |"
+    assert "| 40.00 |" in shown.markdown
+    assert shown._repr_markdown_() == shown.markdown
+
+
+def test_table_refuses_what_it_cannot_show() -> None:
+    import pandas as pd
+
+    frame = pd.DataFrame({"a": [1.0]})
+    with pytest.raises(TypeError, match="frame=list must be a pandas DataFrame"):
+        display.table([1, 2], "c", "table-a")
+    with pytest.raises(ValueError, match="name='Table 1' must be a label"):
+        display.table(frame, "c", "Table 1")
+    with pytest.raises(ValueError, match="caption='' must be one line"):
+        display.table(frame, "", "table-a")
+    with pytest.raises(ValueError, match="frame has no rows"):
+        display.table(frame.iloc[:0], "c", "table-a")
+
+
+def test_table_writes_integers_as_integers() -> None:
+    import pandas as pd
+
+    frame = pd.DataFrame({"spans": [1, 2], "DAF [-]": [1.0, 2.5]})
+    text = display.table(frame, "c", "table-ints", number_format="{:.2f}", index=False)
+    assert "| 1 | 1.00 |" in text.markdown and "| 2 | 2.50 |" in text.markdown

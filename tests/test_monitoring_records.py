@@ -114,6 +114,19 @@ def test_one_record_gives_the_same_type_as_many() -> None:
     assert "RecordDAFs(1 event: RecordDAF(DAF" in repr(one)
 
 
+def test_events_of_different_lengths_in_a_list() -> None:
+    """Records of events at different speeds differ in length: a list of them is several
+    events, each estimated on its own (as if given one at a time)."""
+    short, truth_short = _event(ring=0.1, tail=4.0)
+    long, truth_long = _event(ring=0.3, tail=7.0)
+    assert short.size != long.size
+    both = mon.daf_from_record([short, long], FS, speed=[25.0, 25.0], span=25.0)
+    assert len(both) == 2
+    np.testing.assert_allclose(both.daf, [truth_short, truth_long], rtol=0.01)
+    alone = mon.daf_from_record(long, FS, speed=25.0, span=25.0).item()
+    assert both[1].daf == alone.daf
+
+
 def test_a_plain_list_is_one_record() -> None:
     record, truth = _event(ring=0.2)
     result = mon.daf_from_record(list(record), FS, speed=25.0, span=25.0)

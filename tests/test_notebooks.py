@@ -17,6 +17,7 @@ NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 DATA_PARAMETERS = {
     "04-how-good-is-the-simple-model": {"data_dir": str(SHARED_DATA / "seed-study")},
     "05-road-profiles-and-roughness": {"data_dir": str(SHARED_DATA)},
+    "08-beyond-the-study": {"data_dir": str(SHARED_DATA / "seed-study")},
 }
 
 

@@ -138,7 +138,7 @@ def test_step_rises_over_one_sample() -> None:
 def test_shapes_reject_bad_numbers() -> None:
     with pytest.raises(ValueError, match="height=nan must be a finite number"):
         vbi.Profile.bump(10.0, 0.1, position=5.0, height=float("nan"), width=1.0)
-    with pytest.raises(ValueError, match="position='x' must be a number"):
+    with pytest.raises(TypeError, match="position='x' must be a number"):
         vbi.Profile.step(10.0, 0.1, position="x", height=0.01)
     with pytest.raises(ValueError, match="run=0"):
         vbi.Profile.ramp(10.0, 0.1, position=1.0, rise=0.01, run=0)

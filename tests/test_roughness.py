@@ -136,13 +136,18 @@ def test_iri_returns_one_kind_of_result_whatever_is_asked() -> None:
     assert split.valid.all()
 
 
-def test_a_segment_without_a_slope_step_is_flagged_not_hidden() -> None:
-    """A last segment shorter than the 250 mm base holds no step: NaN, and valid says so."""
+def test_a_last_piece_without_a_slope_step_joins_the_segment_before_it() -> None:
+    """The last 0.1 m of a 100.1 m road holds no step: no NaN segment, the one before grows.
+
+    Reference: the mean suspension stroke of the steps in each segment, from the whole
+    road's IRI of a sine (the same in every segment to the accuracy of a steady state).
+    """
     road = vbi.Profile.harmonic(100.1, 0.025, wavelength=8.0, amplitude=1e-3)
     result = vbi.iri(road, segment_length=50.0)
-    assert len(result) == 3
-    assert result.valid.tolist() == [True, True, False]
-    assert np.isnan(result.segment_iri[2]) and np.isfinite(result.iri)
+    assert len(result) == 2 and result.valid.all()
+    assert result.stop.tolist() == [50.0, pytest.approx(100.1)]
+    whole = vbi.iri(vbi.Profile.harmonic(3000.0, 0.025, wavelength=8.0, amplitude=1e-3)).iri
+    np.testing.assert_allclose(result.segment_iri, whole, rtol=0.05)
 
 
 def test_iri_rejects_too_short_and_bad_segments() -> None:

@@ -97,6 +97,76 @@ def test_table_2_13_1_gives_the_stated_frequencies() -> None:
     assert round(truck.frequency_hz, 2) == 4.00
 
 
+def test_validation_models_are_table_2_13_1() -> None:
+    """Both validation beams carry the table's numbers; 3.00 Hz and 4.00 Hz as the text says."""
+    row = sd.table_2_13_1().iloc[0]
+    for n_spans in (1, 2):
+        bridge, truck = sd.validation_models(n_spans)
+        assert bridge.n_spans == n_spans
+        assert bridge.span == pytest.approx(row.span_ft * 0.3048, rel=1e-15)
+        assert bridge.EI / LB_IN2 == pytest.approx(row.EI_lbf_in2, rel=1e-12)
+        # 4.6 kip/ft is a weight per length: times g per ft it is a mass per length
+        weight_per_ft = bridge.mass_per_length * u.g * u.ft / u.kip
+        assert weight_per_ft == pytest.approx(row.mass_per_length_kip_per_ft, rel=1e-12)
+        assert round(bridge.first_frequency_hz, 2) == 3.00
+        assert truck.stiffness / LB_IN == pytest.approx(row.vehicle_k_lbf_per_in, rel=1e-12)
+        assert truck.damping_ratio == pytest.approx(row.vehicle_damping_ratio, rel=1e-12)
+        assert round(truck.frequency_hz, 2) == 4.00
+    with pytest.raises(ValueError, match="n_spans=3 must be 1 or 2"):
+        sd.validation_models(3)
+
+
+def test_reported_fe_tables_are_consistent_as_printed() -> None:
+    """The study's per cent columns follow from its inch columns (to the printed rounding)."""
+    t2 = sd.table_2_13_2().iloc[0]
+    assert t2.max_diff_percent > t2.mae_percent > 0
+    t3 = sd.table_2_13_3()
+    for n_spans, row in t3.iterrows():
+        diff = 100 * abs(row.state_space_max_in - row.fe_max_in) / abs(row.fe_max_in)
+        assert diff == pytest.approx(row.diff_percent, abs=0.006), n_spans
+        assert 100 * row.mae_in / abs(row.fe_max_in) == pytest.approx(row.mae_percent, abs=0.006)
+    t4 = sd.table_2_13_4().iloc[0]
+    diff = 100 * abs(t4.one_mode_max_in - t4.five_modes_max_in) / abs(t4.five_modes_max_in)
+    # peaks printed to 1e-4 in: the difference of two of them is known to +-0.03 %
+    assert diff == pytest.approx(t4.diff_percent, abs=0.03)
+    mae = 100 * t4.mae_in / abs(t4.five_modes_max_in)  # MAE printed to 1e-4 in: +-0.02 %
+    assert mae == pytest.approx(t4.mae_percent, abs=0.02)
+    decisions = sd.table_2_13_12()
+    assert decisions.loc["modes solved for and included", "selection"] == "15"
+    assert decisions.loc["time step", "selection"] == "0.0015 s"
+
+
+def test_published_design_crosses_the_printed_tables() -> None:
+    """Every Table 2.13.8 beam with its Table 2.13.9 truck and the 2.8 Hz truck on the twelve
+    ISO roads of Table 2.13.11, in the columns the model inputs are built from."""
+    design = sd.published_assessment_design()
+    table, roads = design
+    assert design.folder is None and "generated" in repr(design)
+    assert len(table) == 12 * 2 * 12 and len(roads) == 12
+    assert set(table.vehicle) == {
+        "10.5 Hz damped (10%)",
+        "4.5 Hz damped (10%)",
+        "2.5 Hz damped (10%)",
+        "2.8 Hz (20%)",
+    }
+    beams = sd.table_2_13_8()
+    assert table.groupby(["span_ft", "n_spans", "path"]).size().eq(24).all()
+    assert len(table.groupby(["span_ft", "n_spans", "path"])) == len(beams)
+    for name, road in roads.items():
+        assert road.name == name and road.elevation[0] == 0.0
+        assert road.length == pytest.approx(650 * u.ft)
+        assert road.spacing == pytest.approx(1 * u.inch)
+    # the roads are those of Profile.iso8608 with the stated parameters and seeds
+    again = vbi.Profile.iso8608(650 * u.ft, 1 * u.inch, c10=600e-6, waviness=3, seed=2)
+    np.testing.assert_allclose(
+        roads["ISO_C10-600e-06_w-3_2"].elevation, again.elevation - again.elevation[0]
+    )
+    bridges, trucks, _ = sd.assessment_inputs(table, roads)
+    slow = [t for t, v in zip(trucks, table.vehicle, strict=True) if v.startswith("2.8")]
+    assert {round(t.frequency_hz, 3) for t in slow} == {2.8}
+    assert {round(b.first_frequency_hz, 2) for b in bridges} == {9.95, 9.98, 3.99, 2.08}
+
+
 def test_tables_are_fresh_copies() -> None:
     table = sd.table_2_13_8()
     table.loc[1, "k_mid_lbf_per_in"] = 0.0

@@ -17,6 +17,7 @@ from . import (
     display,
     models,
     monitoring,
+    ranges,
     roughness,
     studies,
     study_data,
@@ -38,7 +39,7 @@ from .modes import BeamModes, beam_modes
 from .profile_files import ErdFile, ProfileFileError, read_erd, read_profile
 from .profiles import Profile, iso8608_class, max_sample_spacing
 from .roughness import fit_iso8608, iri, profile_spectrum
-from .validity import ContactLossWarning, VbiWarning
+from .validity import ContactLossWarning, OutsideValidityWarning, VbiWarning
 from .vehicle_metrics import contact_force_amplification
 from .vehicles import QuarterCar, Vehicle, VehicleSystem
 
@@ -52,6 +53,7 @@ __all__ = [
     "ErdFile",
     "ModalCrossing",
     "OneCoordinateCrossing",
+    "OutsideValidityWarning",
     "Profile",
     "ProfileFileError",
     "QuarterCar",
@@ -71,6 +73,7 @@ __all__ = [
     "models",
     "monitoring",
     "profile_spectrum",
+    "ranges",
     "read_erd",
     "read_profile",
     "reference_beam",

@@ -1,8 +1,12 @@
 r"""Impact factor, dynamic amplification factor and how design codes set them (equations 16-18).
 
+With :math:`Q_{sta}` a response (deflection, strain, moment) to the vehicle standing still
+and :math:`Q_{dyn}` its largest value at speed (the book's :eq:`study-16` to
+:eq:`study-18`):
+
 .. math::
-    IM = \frac{R_{dyn} - R_{sta}}{R_{sta}}, \qquad DAF = \frac{R_{dyn}}{R_{sta}} = 1 + IM,
-    \qquad R_{LL} = R_{sta} (1 + IM) = R_{sta}\, DAF .
+    IM = \frac{Q_{dyn} - Q_{sta}}{Q_{sta}}, \qquad DAF = \frac{Q_{dyn}}{Q_{sta}} = 1 + IM,
+    \qquad Q_{LL} = Q_{sta} (1 + IM) = Q_{sta}\, DAF .
 
 Design codes give the allowance ``IM`` without a vehicle-bridge model:
 
@@ -31,7 +35,7 @@ _OHBDC_ALLOWANCE = np.array([0.20, 0.40, 0.40, 0.25])
 
 
 def impact_factor(dynamic: float | np.ndarray, static: float | np.ndarray) -> np.ndarray:
-    """``IM = (R_dyn - R_sta) / R_sta`` (16).
+    """``IM = (Q_dyn - Q_sta) / Q_sta`` (16), :eq:`study-16`.
 
     >>> round(float(impact_factor(1.3, 1.0)), 12)
     0.3
@@ -45,7 +49,7 @@ def impact_factor(dynamic: float | np.ndarray, static: float | np.ndarray) -> np
 def dynamic_amplification_factor(
     dynamic: float | np.ndarray, static: float | np.ndarray
 ) -> np.ndarray:
-    """``DAF = R_dyn / R_sta = 1 + IM`` (17).
+    """``DAF = Q_dyn / Q_sta = 1 + IM`` (17), :eq:`study-17`.
 
     >>> float(dynamic_amplification_factor(-1.25, -1.0))
     1.25
@@ -57,7 +61,7 @@ def dynamic_amplification_factor(
 
 
 def live_load_response(static: float | np.ndarray, impact: float | np.ndarray) -> np.ndarray:
-    """Design live-load response ``R_LL = R_sta (1 + IM)`` (18).
+    """Design live-load response ``Q_LL = Q_sta (1 + IM)`` (18), :eq:`study-18`.
 
     >>> float(live_load_response(100.0, 0.33))
     133.0

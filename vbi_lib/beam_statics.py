@@ -60,20 +60,14 @@ QUANTITY = {"displacement": "deflection", "moment": "moment", "shear": "force"}
 
 
 def _span_lengths(spans: object) -> np.ndarray:
-    try:
-        array = np.atleast_1d(np.asarray(spans, dtype=float))
-    except (TypeError, ValueError):
-        raise ValueError(f"spans={spans!r} must be a list of span lengths [m]") from None
+    array = np.atleast_1d(check.real_array("spans", spans))
     if array.ndim != 1 or array.size < 1 or not np.isfinite(array).all() or (array <= 0).any():
         raise ValueError(f"spans={spans!r} must be one or more finite span lengths > 0 [m]")
     return array
 
 
 def _stations(name: str, values: object, length: float) -> np.ndarray:
-    try:
-        array = np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name}={values!r} must be stations [m]") from None
+    array = check.real_array(name, values)
     if not np.isfinite(array).all():
         raise ValueError(f"{name}={values!r} must be finite stations [m]")
     if ((array < 0) | (array > length)).any():
@@ -249,7 +243,8 @@ class StaticEnvelope:
 
 
 def effect_index(effect: str) -> int:
-    """Position of ``effect`` in :data:`EFFECTS` (``ValueError`` for an unknown effect)."""
+    """The row of ``effect`` (``"displacement"``, ``"moment"`` or ``"shear"``) in the
+    ``(3, ...)`` arrays of :data:`EFFECTS`; ``ValueError`` for another name."""
     if effect not in EFFECTS:
         raise ValueError(f"effect={effect!r} is not known; use one of {', '.join(EFFECTS)}")
     return EFFECTS.index(effect)

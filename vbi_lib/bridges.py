@@ -36,6 +36,7 @@ from functools import lru_cache
 
 from . import _validation as check
 from .continuous_beams import natural_wavenumbers, support_stations
+from .ranges import check_range
 
 
 @dataclass(frozen=True)
@@ -66,9 +67,18 @@ class Bridge:
 
     Raises
     ------
+    TypeError
+        A value that is not a number (text, a bool), ``n_spans`` that is not an int.
     ValueError
-        A value outside what is allowed, named in the message; ``n_spans`` other than 1 or
-        2 without ``span_lengths``; ``span`` and ``n_spans`` that disagree with them.
+        A value outside its range of validity (:data:`vbi_lib.ranges.RANGES`: ``span``,
+        ``EI``, ``mass_per_length``, ``bridge_damping_ratio`` and the first frequency they
+        give, ``bridge_frequency``), named in the message; ``n_spans`` other than 1 or 2
+        without ``span_lengths``; ``span`` and ``n_spans`` that disagree with them.
+
+    Warns
+    -----
+    OutsideValidityWarning
+        A span, mass, damping ratio or first frequency outside the intended (soft) range.
 
     Examples
     --------
@@ -88,8 +98,9 @@ class Bridge:
     span_lengths: tuple[float, ...] | None = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "span", check.positive("span", self.span))
-        if self.span_lengths is None:
+        given = self.span_lengths is not None
+        object.__setattr__(self, "span", check_range("span", self.span, warn=not given))
+        if not given:
             object.__setattr__(self, "n_spans", check.n_spans(self.n_spans))
         else:
             lengths = _span_lengths(self.span_lengths)
@@ -101,13 +112,21 @@ class Bridge:
                 )
             study = len(lengths) <= 2 and all(length == lengths[0] for length in lengths)
             object.__setattr__(self, "span_lengths", None if study else lengths)
-        object.__setattr__(self, "EI", check.positive("EI", self.EI))
+        object.__setattr__(self, "EI", check_range("EI", self.EI))
         object.__setattr__(
-            self, "mass_per_length", check.positive("mass_per_length", self.mass_per_length)
+            self, "mass_per_length", check_range("mass_per_length", self.mass_per_length)
         )
+        zeta = check.damping_ratio("damping_ratio", self.damping_ratio)
         object.__setattr__(
-            self, "damping_ratio", check.damping_ratio("damping_ratio", self.damping_ratio)
+            self, "damping_ratio", check_range("bridge_damping_ratio", zeta, "damping_ratio")
         )
+        try:
+            check_range("bridge_frequency", self.first_frequency_hz, "first_frequency_hz")
+        except ValueError as exc:
+            raise ValueError(
+                f"{exc}: EI={self.EI:.4g} N m^2 and mass_per_length={self.mass_per_length:.4g} "
+                f"kg/m over spans {self.spans} m give no beam a vehicle crosses; check their units"
+            ) from None
 
     @classmethod
     def continuous(
@@ -137,8 +156,11 @@ class Bridge:
 
         Raises
         ------
+        TypeError
+            ``spans`` that is not a list of numbers.
         ValueError
-            No spans, a span that is not a finite number > 0, or a bad EI, mass or damping.
+            No spans, more than 50, a span outside 1 to 2000 m, or a bad EI, mass or damping
+            (see :class:`Bridge`).
 
         Examples
         --------
@@ -149,7 +171,7 @@ class Bridge:
         ...                                                      .first_frequency_hz, 4)
         ((0.0, 20.0, 40.0, 60.0), True)
         """
-        lengths = _span_lengths(spans)
+        lengths = _span_lengths(spans, warn=False)  # the bridge warns once, below
         return cls(max(lengths), len(lengths), EI, mass_per_length, damping_ratio, lengths)
 
     @property
@@ -170,6 +192,8 @@ class Bridge:
         damping_ratio: float = 0.01,
     ) -> Bridge:
         """The study's beam from a path's midspan stiffness and the first frequency (82)-(84).
+
+        The book's :eq:`study-82` to :eq:`study-84`.
 
         ``EI = K_mid L^3 / 48`` for one span (82) and ``EI = K_mid L^3 / pi^4`` for two (83);
         the mass per span ``pi^4 EI / ((2 pi f_1)^2 L^3)`` (84) then gives the frequency.
@@ -196,10 +220,11 @@ class Bridge:
         >>> f"{b.EI / (u.lbf * u.inch**2):.3e}", round(b.mass_per_span / u.slinch, 2)
         ('1.354e+12', 305.16)
         """
-        span = check.positive("span", span)
+        span = check_range("span", span, warn=False)
         n_spans = check.n_spans(n_spans)
-        k_mid = check.positive("k_mid", k_mid)
-        frequency = check.positive("first_frequency_hz", first_frequency_hz)
+        k_mid = check_range("k_mid", k_mid)
+        frequency = check_range("bridge_frequency", first_frequency_hz, "first_frequency_hz",
+                                warn=False)  # fmt: skip
         EI = k_mid * span**3 / (48.0 if n_spans == 1 else math.pi**4)
         return cls(span, n_spans, EI, mass_per_length_for(EI, span, frequency), damping_ratio)
 
@@ -223,9 +248,11 @@ class Bridge:
         >>> f"{b.EI / (u.lbf * u.inch**2):.3e}"
         '5.603e+12'
         """
-        span = check.positive("span", span)
-        mass_per_length = check.positive("mass_per_length", mass_per_length)
-        omega = 2.0 * math.pi * check.positive("first_frequency_hz", first_frequency_hz)
+        span = check_range("span", span, warn=False)
+        mass_per_length = check_range("mass_per_length", mass_per_length, warn=False)
+        frequency = check_range("bridge_frequency", first_frequency_hz, "first_frequency_hz",
+                                warn=False)  # fmt: skip
+        omega = 2.0 * math.pi * frequency
         EI = omega**2 * mass_per_length * span**4 / math.pi**4
         return cls(span, n_spans, EI, mass_per_length, damping_ratio)
 
@@ -301,23 +328,34 @@ class Bridge:
 
     @property
     def generalized_mass(self) -> float:
-        """``m* = N mbar L / 2`` [kg] (36), (62); one span or two equal spans."""
+        """``m* = N mbar L / 2`` [kg] (36), (62); one span or two equal spans.
+
+        The book's :eq:`study-36` and :eq:`study-62`.
+        """
         self._study_only("generalized_mass")
         return self.n_spans * self.mass_per_length * self.span / 2.0
 
     @property
     def generalized_stiffness(self) -> float:
-        """``k* = N pi^4 EI / (2 L^3)`` [N/m] (37), (63); one span or two equal spans."""
+        """``k* = N pi^4 EI / (2 L^3)`` [N/m] (37), (63); one span or two equal spans.
+
+        The book's :eq:`study-37` and :eq:`study-63`.
+        """
         self._study_only("generalized_stiffness")
         return self.n_spans * math.pi**4 * self.EI / (2.0 * self.span**3)
 
     @property
     def generalized_damping(self) -> float:
-        """``c* = 2 zeta omega_b m*`` [N s/m], mass-proportional damping (40)-(43), (66)."""
+        """``c* = 2 zeta omega_b m*`` [N s/m], mass-proportional damping (40)-(43), (66).
+
+        The book's :eq:`study-43` and :eq:`study-66`.
+        """
         return 2.0 * self.damping_ratio * self.circular_frequency * self.generalized_mass
 
     def static_deflection(self, force: float) -> float:
         """The model's own midspan deflection under ``force`` at midspan [m] (90), (91).
+
+        The book's :eq:`study-90` and :eq:`study-91`.
 
         ``2 P L^3 / (pi^4 EI)`` for one span, ``P L^3 / (pi^4 EI)`` for two: in both cases
         ``P / k*``.  Positive number (magnitude of the downward deflection).
@@ -337,6 +375,8 @@ class Bridge:
 
     def exact_static_deflection(self, force: float) -> float:
         """Exact beam midspan deflection under ``force`` at midspan [m] (38), (64).
+
+        The book's :eq:`study-38` and :eq:`study-64`.
 
         ``P L^3 / (48 EI)`` for one span; ``23 P L^3 / 1536 EI`` for two equal continuous
         spans with the load at midspan of one span.  Other layouts:
@@ -359,11 +399,16 @@ class Bridge:
         )
 
 
-def _span_lengths(spans: object) -> tuple[float, ...]:
-    """Span lengths as a tuple of floats, each finite and > 0."""
-    if isinstance(spans, str | bytes) or not hasattr(spans, "__len__") or len(spans) < 1:
+def _span_lengths(spans: object, warn: bool = True) -> tuple[float, ...]:
+    """Span lengths as a tuple of floats, each within the range of ``span``."""
+    if isinstance(spans, str | bytes) or not hasattr(spans, "__len__"):
+        raise TypeError(f"spans={spans!r} must be a list of one or more span lengths [m]")
+    if len(spans) < 1:
         raise ValueError(f"spans={spans!r} must be a list of one or more span lengths [m]")
-    return tuple(check.positive(f"spans[{j}]", length) for j, length in enumerate(spans))
+    check_range("n_spans", len(spans), "len(spans)", warn=False)
+    return tuple(
+        check_range("span", length, f"spans[{j}]", warn=warn) for j, length in enumerate(spans)
+    )
 
 
 @lru_cache(maxsize=256)
@@ -421,16 +466,19 @@ def reference_beam(
     >>> f"{b.EI / (u.lbf * u.inch**2):.4e}"
     '1.1940e+12'
     """
-    span = check.positive("span", span)
+    span = check_range("span", span, warn=False)
     n_spans = check.n_spans(n_spans)
-    k_mid = check.positive("k_mid", k_mid)
-    frequency = check.positive("first_frequency_hz", first_frequency_hz)
+    k_mid = check_range("k_mid", k_mid)
+    frequency = check_range("bridge_frequency", first_frequency_hz, "first_frequency_hz",
+                            warn=False)  # fmt: skip
     EI = k_mid * span**3 * (1.0 / 48.0 if n_spans == 1 else 23.0 / 1536.0)
     return Bridge(span, n_spans, EI, mass_per_length_for(EI, span, frequency), damping_ratio)
 
 
 def shape_function_error(n_spans: int) -> float:
     """Error of the sine shape function in the midspan deflection under a midspan load (39), (65).
+
+    The book's :eq:`study-39` and :eq:`study-65`.
 
     The model's deflection ``P / k*`` against the exact beam value: one span
     ``1 - 96 / pi^4`` (1.45 %), two spans ``1 - 1536 / (23 pi^4)`` (31.4 %).

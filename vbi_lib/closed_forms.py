@@ -504,20 +504,11 @@ def contact_force_transmissibility(
 
 # ---------------------------------------------------------------------------- input checks
 def _finite(name: str, value: float) -> float:
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name}={value!r} must be a number") from None
-    if not math.isfinite(number):
-        raise ValueError(f"{name}={value!r} must be a finite number")
-    return number
+    return check.finite(name, value)
 
 
 def _as_array(name: str, values: object) -> np.ndarray:
-    try:
-        array = np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name}={values!r} must be a number or an array of numbers") from None
+    array = check.real_array(name, values)
     if not np.isfinite(array).all():
         raise ValueError(f"{name}={values!r} must be finite (no NaN or infinity)")
     return array
@@ -547,9 +538,7 @@ def _on_beam(name: str, values: object, length: float) -> np.ndarray:
 
 
 def _mode_range(modes: int) -> np.ndarray:
-    if isinstance(modes, bool) or not isinstance(modes, int | np.integer) or modes < 1:
-        raise ValueError(f"modes={modes!r} must be a whole number >= 1")
-    return np.arange(1, int(modes) + 1, dtype=float)
+    return np.arange(1, check.integer("modes", modes, low=1, high=100_000) + 1, dtype=float)
 
 
 def _ratios(frequency_ratio: object, damping_ratio: object) -> tuple[np.ndarray, np.ndarray]:

@@ -45,6 +45,8 @@ from functools import lru_cache
 import numpy as np
 from scipy.optimize import brentq
 
+from . import _validation as check
+
 __all__ = [
     "clamped_count",
     "count_below",
@@ -246,8 +248,7 @@ def natural_wavenumbers(spans: object, count: int) -> np.ndarray:
     array([1.    , 1.2815, 1.8713, 4.    ])
     """
     spans = _spans_array(spans)
-    if isinstance(count, bool) or not isinstance(count, int | np.integer) or count < 1:
-        raise ValueError(f"count={count!r} must be a whole number >= 1")
+    count = check.integer("count", count, low=1)
     return np.array(_wavenumbers(tuple(float(s) for s in spans), int(count)))
 
 

@@ -8,7 +8,8 @@ The library computes in SI; what a reader sees is a separate choice, made once a
 * ``"SI"``: m, mm, km/h, kN, kN/m, t, with US customary alongside.
 
 Results' ``plot`` and ``to_dataframe`` methods and the chapters use :func:`value`,
-:func:`symbol`, :func:`label` and :func:`fmt`, so a chapter never converts by hand::
+:func:`symbol`, :func:`label` and :func:`fmt`, so a chapter never converts by hand; the book
+shows a table as a numbered, captioned table with :func:`table`::
 
     >>> from vbi_lib import display
     >>> display.set_units("US")
@@ -23,18 +24,22 @@ Results' ``plot`` and ``to_dataframe`` methods and the chapters use :func:`value
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
+from typing import Any
 
 from . import units as u
 
 __all__ = [
     "QUANTITIES",
     "System",
+    "Table",
     "current",
     "fmt",
     "label",
     "set_units",
     "symbol",
+    "table",
     "value",
 ]
 
@@ -60,6 +65,7 @@ US = System(
     {
         **_COMMON,
         "length": ("ft", u.ft),
+        "spacing": ("in", u.inch),
         "deflection": ("in", u.inch),
         "elevation": ("in", u.inch),
         "speed": ("mph", u.mph),
@@ -81,6 +87,7 @@ SI = System(
     {
         **_COMMON,
         "length": ("m", 1.0),
+        "spacing": ("mm", u.mm),
         "deflection": ("mm", u.mm),
         "elevation": ("mm", u.mm),
         "speed": ("km/h", u.kph),
@@ -169,3 +176,131 @@ def fmt(si_value: float, quantity: str, digits: int = 3) -> str:
     if other_symbol == symbol_:
         return main
     return f"{main} ({si_value / other_size:.{digits}g} {other_symbol})"
+
+
+# ---------------------------------------------------------------------------- book tables
+_LABEL = re.compile(r"^[a-z][a-z0-9]*(-[a-z0-9]+)*$")
+
+
+@dataclass(frozen=True)
+class Table:
+    """A numbered, captioned table for the book: MyST Markdown shown by Jupyter.
+
+    ``markdown`` is a ``{table}`` directive around a pipe table.  A notebook cell that
+    returns it publishes the text as ``text/markdown``; with the cell's metadata
+    ``"mystnb": {"markdown_format": "myst"}`` the book parses the directive, numbers the
+    table and lets ``{numref}`` refer to its ``name``.
+    """
+
+    markdown: str
+    name: str
+
+    def _repr_markdown_(self) -> str:
+        return self.markdown
+
+    def __repr__(self) -> str:
+        return f"Table({self.name!r})"
+
+
+def _cell(value: Any, number_format: str) -> str:
+    """One cell's text: integers as integers, other numbers in ``number_format``."""
+    kind = getattr(getattr(value, "dtype", None), "kind", "")
+    if isinstance(value, bool) or kind == "b":
+        return "yes" if value else "no"
+    if isinstance(value, int) or kind in ("i", "u"):
+        return str(int(value))
+    if isinstance(value, float) or kind == "f":
+        try:
+            return number_format.format(float(value))
+        except (ValueError, TypeError):
+            return str(value)
+    return str(value)
+
+
+def table(
+    frame: Any,
+    caption: str,
+    name: str,
+    number_format: str = "{:.4g}",
+    index: bool = True,
+) -> Table:
+    """A DataFrame as a numbered, captioned table of the book (MyST ``{table}`` directive).
+
+    Numbers are written with ``number_format`` (``str.format`` syntax) unless the column is
+    already text, so format a column yourself (e.g. with :func:`fmt`) to give it units or its
+    own digits; numeric columns are right-aligned.  Column names should carry their units
+    (:func:`label`).  Pipes and line breaks in cells are escaped.
+
+    Parameters
+    ----------
+    frame
+        A ``pandas.DataFrame``.
+    caption
+        The table's caption (MyST Markdown: math and roles allowed), one line.
+    name
+        The label ``{numref}`` refers to: lowercase words joined by hyphens,
+        e.g. ``"table-study-beams"``.
+    number_format
+        Format of numeric cells.
+    index
+        Whether the index is the first column (its name heads it).
+
+    Returns
+    -------
+    Table
+
+    Raises
+    ------
+    TypeError
+        ``frame`` is not a DataFrame.
+    ValueError
+        An empty or multi-line caption, a name that is not a label, or a table without
+        rows or columns.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> t = table(pd.DataFrame({"DAF [-]": [1.234567]}, index=pd.Index(["a"], name="run")),
+    ...           "One run.", "table-one-run")
+    >>> print(t.markdown)
+    :::{table} One run.
+    :name: table-one-run
+    <BLANKLINE>
+    | run | DAF [-] |
+    |:---|---:|
+    | a | 1.235 |
+    :::
+    """
+    import pandas as pd
+
+    if not isinstance(frame, pd.DataFrame):
+        raise TypeError(f"frame={type(frame).__name__} must be a pandas DataFrame")
+    if not isinstance(caption, str) or not caption.strip() or "\n" in caption.strip():
+        raise ValueError(f"caption={caption!r} must be one line of text")
+    if not isinstance(name, str) or not _LABEL.match(name):
+        raise ValueError(
+            f"name={name!r} must be a label of lowercase words joined by hyphens, "
+            "e.g. 'table-study-beams'"
+        )
+    if frame.empty:
+        raise ValueError("frame has no rows or no columns: there is no table to show")
+    shown = frame.reset_index() if index else frame
+    if index and shown.columns[0] == "index":
+        shown = shown.rename(columns={"index": ""})
+    types = pd.api.types
+    numeric = [
+        types.is_numeric_dtype(shown[c]) and not types.is_bool_dtype(shown[c])
+        for c in shown.columns
+    ]
+
+    def escape(text: object) -> str:
+        return str(text).replace("|", "\\|").replace("\n", " ")
+
+    header = "| " + " | ".join(escape(c) for c in shown.columns) + " |"
+    rule = "|" + "|".join("---:" if n else ":---" for n in numeric) + "|"
+    rows = [
+        "| " + " | ".join(escape(_cell(v, number_format)) for v in row) + " |"
+        for row in shown.itertuples(index=False)
+    ]
+    text = "\n".join([f":::{{table}} {caption.strip()}", f":name: {name}", "", header, rule, *rows])
+    return Table(text + "\n:::", name)

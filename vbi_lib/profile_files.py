@@ -25,6 +25,7 @@ import numpy as np
 
 from . import _validation as check
 from .profiles import Profile
+from .ranges import RANGES
 
 #: Length units accepted by name by the readers [m per unit].
 LENGTH_UNITS = {
@@ -51,6 +52,13 @@ class ProfileFileError(ValueError):
         self.path = str(path)
         self.line = line
         self.problem = problem
+
+
+def _path(path: object) -> Path:
+    """``path`` as a :class:`~pathlib.Path` (text or a path-like), else ``TypeError``."""
+    if not isinstance(path, str | Path) and not hasattr(path, "__fspath__"):
+        raise TypeError(f"path={path!r} must be a file path (text or pathlib.Path)")
+    return Path(path)
 
 
 def _length_unit(name: str, unit: float | str) -> float:
@@ -107,6 +115,16 @@ def read_profile(
     name
         Name of the profile; the file's stem by default.
 
+    Raises
+    ------
+    TypeError
+        ``path`` that is not a path, ``skip_rows`` that is not an int, ``unit`` that is
+        neither a name nor a number.
+    ProfileFileError
+        A file that cannot be read or is malformed (a ``ValueError``).
+    ValueError
+        An unknown unit name, a factor not > 0, ``skip_rows < 0``.
+
     Examples
     --------
     >>> import tempfile, pathlib
@@ -121,11 +139,12 @@ def read_profile(
     ...
     vbi_lib.profile_files.ProfileFileError: .../bad.csv, line 2: elevation 'x' is not a number
     """
-    path = Path(path)
+    path = _path(path)
     scale_x = _length_unit("unit", unit)
     scale_z = scale_x if elevation_unit is None else _length_unit("elevation_unit", elevation_unit)
-    if int(skip_rows) != skip_rows or skip_rows < 0:
-        raise ValueError(f"skip_rows={skip_rows!r} must be a whole number >= 0")
+    skip_rows = check.integer("skip_rows", skip_rows, low=0)
+    if name is not None and not isinstance(name, str):
+        raise TypeError(f"name={name!r} must be text or None, not {type(name).__name__}")
     try:
         text = path.read_text(encoding="utf-8-sig")  # tolerate a byte-order mark
     except OSError as exc:
@@ -243,7 +262,7 @@ def read_erd(path: str | Path) -> ErdFile:
     >>> erd[0].elevation.tolist()
     [0.0, 0.0015, -0.0005]
     """
-    path = Path(path)
+    path = _path(path)
     try:
         lines = path.read_text(encoding="utf-8-sig").splitlines()
     except OSError as exc:
@@ -290,8 +309,11 @@ def read_erd(path: str | Path) -> ErdFile:
         value = raw[8:]
         header[key] = value.strip()
         if key in ("UNITSNAM", "SHORTNAM"):
-            fixed = [value[8 * i : 8 * i + 8].strip() for i in range(n_channels)]
-            per_channel[key] = fixed if all(fixed) else value.split()
+            # one 8-character field per channel: as many as the line holds, never the
+            # declared count (a header may declare more channels than the file has)
+            held = min(n_channels, math.ceil(len(value) / 8))
+            fixed = [value[8 * i : 8 * i + 8].strip() for i in range(held)]
+            per_channel[key] = fixed if fixed and all(fixed) else value.split()
     if end is None:
         raise ProfileFileError(path, len(lines), "no 'END' line closes the ERD header")
 
@@ -316,8 +338,18 @@ def read_erd(path: str | Path) -> ErdFile:
     scales = [unit_of(units[i], "UNITSNAM") for i in range(n_channels)]
     names = per_channel.get("SHORTNAM", [])
     names = [names[i] if i < len(names) else f"channel {i + 1}" for i in range(n_channels)]
+    interval = step * scale_x
+    low, high = RANGES["spacing"].hard
+    if not low <= interval <= high:
+        raise ProfileFileError(
+            path,
+            2,
+            f"sample interval {fields[5]} {header['XUNITS']} ({interval:.4g} m) must be "
+            f"{RANGES['spacing'].hard_text()} ({RANGES['spacing'].reason})",
+        )
 
-    data = np.empty((n_samples, n_channels))
+    # rows as the file holds them: the declared count is compared, never allocated
+    values: list[list[float]] = []
     row = 0
     for index in range(end + 1, len(lines)):
         line = lines[index].strip()
@@ -335,14 +367,15 @@ def read_erd(path: str | Path) -> ErdFile:
             raise ProfileFileError(
                 path, number, f"expected {n_channels} values (one per channel), found {len(cells)}"
             )
-        for j, cell in enumerate(cells):
-            data[row, j] = _number(path, number, cell, f"channel {j + 1} value")
+        values.append(
+            [_number(path, number, cell, f"channel {j + 1} value") for j, cell in enumerate(cells)]
+        )
         row += 1
     if row < n_samples:
         raise ProfileFileError(
             path, len(lines), f"only {row} data rows; the header declares {n_samples} samples"
         )
-    interval = step * scale_x
+    data = np.array(values, dtype=float).reshape(n_samples, n_channels)
     x = interval * np.arange(n_samples)
     channels = tuple(Profile(x, data[:, j] * scales[j], name=names[j]) for j in range(n_channels))
     return ErdFile(channels, header, interval, str(path))

@@ -8,7 +8,8 @@ velocity ``v dDelta/dx`` is exact on each segment.
 The sampling rule of the study (32): to see a natural frequency ``f_max`` at the slowest
 speed of interest ``v_min``, sample at least every ``S_max = v_min / (2 f_max)``.
 
-Artificial roads follow ISO 8608 (study equation 87): the displacement power spectral density
+Artificial roads follow ISO 8608 (study equation 87, :eq:`study-87` in the book): the
+displacement power spectral density
 
 .. math::
     G_d(n) = G_d(n_0) \left(\frac{n}{n_0}\right)^{-w}, \qquad n_0 = 0.1\ \text{cycle/m},
@@ -28,6 +29,7 @@ import numpy as np
 import scipy.fft
 
 from . import _validation as check
+from .ranges import MAX_SAMPLES, RANGES, check_range
 
 #: ISO 8608 road classes and the geometric mean of ``G_d(n0)`` of each [m^3].
 ISO_CLASS_MEANS = {letter: 16e-6 * 4.0**i for i, letter in enumerate("ABCDEFGH")}
@@ -38,6 +40,8 @@ ISO_BAND = (0.011, 2.83)
 
 def max_sample_spacing(min_speed: float, max_frequency_hz: float) -> float:
     """Largest profile sample spacing ``S_max = v_min / (2 f_max)`` [m] (study equation 32).
+
+    The book's :eq:`study-32`.
 
     A profile feature of wavelength ``lambda`` loads the truck at ``v / lambda`` Hz; to
     resolve loading up to ``f_max`` at the slowest speed ``v_min``, two samples per
@@ -89,19 +93,95 @@ def iso8608_class(c10: float) -> str:
     return "ABCDEFGH"[min(max(index, 0), 7)]
 
 
-def _iso_level(c10: float | None, iso_class: str | None) -> float:
-    """``G_d(n0)`` [m^3] from exactly one of ``c10`` and ``iso_class``."""
+def iso_level(c10: float | None, iso_class: str | None, warn: bool = True) -> float:
+    """``G_d(n0)`` [m^3] from exactly one of ``c10`` and ``iso_class``, within its range.
+
+    Raises ``TypeError`` for a ``c10`` that is not a number or an ``iso_class`` that is not
+    text, ``ValueError`` for both or neither, a ``c10`` outside its range of validity
+    (:data:`vbi_lib.ranges.RANGES`) or an unknown class; warns for classes F to H and a
+    ``c10`` above class E.
+    """
     if (c10 is None) == (iso_class is None):
         raise ValueError(
             f"give exactly one of c10 (G_d(0.1 cycle/m) in m^3) and iso_class ('A'..'H'); "
             f"got c10={c10!r}, iso_class={iso_class!r}"
         )
     if c10 is not None:
-        return check.positive("c10", c10)
-    key = str(iso_class).strip().upper()
+        return check_range("c10", c10, warn=warn)
+    if not isinstance(iso_class, str):
+        raise TypeError(
+            f"iso_class={iso_class!r} must be a letter 'A' to 'H' (text, not "
+            f"{type(iso_class).__name__})"
+        )
+    key = iso_class.strip().upper()
     if key not in ISO_CLASS_MEANS:
         raise ValueError(f"iso_class={iso_class!r} is not an ISO 8608 class; use 'A' to 'H'")
-    return ISO_CLASS_MEANS[key]
+    return check_range("c10", ISO_CLASS_MEANS[key], f"iso_class={iso_class!r}: c10", warn=warn)
+
+
+def iso_band(band: object, spacing: float) -> tuple[float, float]:
+    """``(low, high)`` [cycle/m] of a generated road, resolved by ``spacing`` [m]."""
+    if isinstance(band, str | bytes) or not hasattr(band, "__len__") or len(band) != 2:
+        raise TypeError(f"band={band!r} must be two frequencies (low, high) in cycle/m")
+    low, high = (check.finite(f"band[{i}]", b) for i, b in enumerate(band))
+    if not 0 < low < high:
+        raise ValueError(f"band={band!r} must satisfy 0 < low < high (cycle/m)")
+    if high >= 0.5 / spacing:
+        raise ValueError(
+            f"band={band!r} reaches {high:g} cycle/m but spacing={spacing!r} m resolves "
+            f"only up to {0.5 / spacing:g} cycle/m; use a spacing below {0.5 / high:g} m "
+            "or lower band[1]"
+        )
+    return low, high
+
+
+def check_iso_rms(level: float, waviness: float, low: float, high: float) -> float:
+    """The rms [m] of an ISO 8608 road over ``[low, high]`` cycle/m, refused above the hard
+    limit of ``road_rms`` (:data:`vbi_lib.ranges.RANGES`).
+
+    ``rms^2 = integral of G_d(n0) (n / n0)^-w dn`` from ``low`` to ``high``, in closed form:
+    the generated road's variance before any sample is drawn.
+    """
+    if abs(waviness - 1.0) < 1e-12:
+        variance = level * 0.1 * math.log(high / low)
+    else:
+        variance = level * 0.1**waviness * (high ** (1 - waviness) - low ** (1 - waviness))
+        variance /= 1.0 - waviness
+    rms = math.sqrt(variance)
+    spec = RANGES["road_rms"]
+    if rms > spec.hard[1]:
+        raise ValueError(
+            f"c10={level!r} m^3 with waviness={waviness!r} gives a road of rms {rms:.3g} m "
+            f"over {low:.3g} to {high:.3g} cycle/m; a road's rms must be {spec.hard_text()} "
+            f"({spec.reason}): lower c10 or the waviness"
+        )
+    return rms
+
+
+def check_harmonic(
+    length: object, spacing: object, wavelength: object, amplitude: object, phase: object,
+    start: object,
+) -> tuple[float, float, float]:  # fmt: skip
+    """Check a harmonic road's inputs before anything is allocated; ``(wavelength,
+    amplitude, phase)`` as floats.  A wavelength shorter than two samples would alias."""
+    wavelength = check_range("feature_length", wavelength, "wavelength")
+    amplitude = check_range("unevenness", check.non_negative("amplitude", amplitude),
+                            "amplitude")  # fmt: skip
+    phase = check.finite("phase", phase)
+    check_stations(length, spacing, start)
+    if wavelength < 2.0 * float(spacing):
+        raise ValueError(
+            f"wavelength={wavelength!r} m is shorter than two samples of spacing={spacing!r} m: "
+            f"the road would alias; use a spacing below {wavelength / 2:g} m"
+        )
+    return wavelength, amplitude, phase
+
+
+def check_seed(seed: object) -> int | None:
+    """A seed of the random phases: ``None`` or a whole number >= 0."""
+    if seed is None:
+        return None
+    return check.integer("seed", seed, low=0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -179,8 +259,9 @@ class Profile:
         >>> round(float(p.elevation.max()) * 1e3, 3)
         2.0
         """
-        wavelength = check.positive("wavelength", wavelength)
-        amplitude = check.non_negative("amplitude", amplitude)
+        wavelength, amplitude, phase = check_harmonic(
+            length, spacing, wavelength, amplitude, phase, start
+        )
         x = _stations(length, spacing, start)
         elevation = amplitude * np.sin(2.0 * np.pi * (x - start) / wavelength + phase)
         return cls(x, elevation, name=f"harmonic {wavelength:g} m")
@@ -199,8 +280,9 @@ class Profile:
     ) -> Profile:
         r"""A random road with the ISO 8608 spectrum ``G_d(n) = c10 (n / 0.1)^-w`` (study 87).
 
+        The book writes the spectrum as :eq:`study-87` and the sum as :eq:`eq-roads-cosines`.
         A sum of sines :math:`\sum_i \sqrt{2 G_d(n_i) \Delta n}\cos(2\pi n_i (x - x_0) +
-        \varphi_i)` over the frequencies :math:`n_i = i\,\Delta n` inside ``band``, with
+        \theta_i)` over the frequencies :math:`n_i = i\,\Delta n` inside ``band``, with
         phases drawn uniformly from :math:`[0, 2\pi)` by ``numpy.random.default_rng(seed)``.
         :math:`\Delta n = 1 / (N s) \le 1 / \text{length}` (``N`` samples of spacing ``s``
         on a period at least as long as the road) so the road does not repeat, and the sum is
@@ -225,6 +307,21 @@ class Profile:
         start
             First station [m].
 
+        Raises
+        ------
+        TypeError
+            A value of the wrong type (a seed that is not an int, a class that is not text).
+        ValueError
+            Both or neither of ``c10`` and ``iso_class``; ``c10``, ``waviness``, ``length``
+            or ``spacing`` outside their ranges of validity (:data:`vbi_lib.ranges.RANGES`);
+            a band the spacing does not resolve; more than
+            :data:`~vbi_lib.ranges.MAX_SAMPLES` samples.
+
+        Warns
+        -----
+        OutsideValidityWarning
+            ``c10`` above class E (classes F to H) or ``waviness`` outside 1.5 to 4.
+
         Examples
         --------
         One of the study's roads, 650 ft at 1 in, C10 = 300e-6 m^3, w = 3, phase draw 1:
@@ -234,24 +331,14 @@ class Profile:
         >>> road.x.size, road.name
         (7801, 'ISO 8608 C10=300e-6 m^3 w=3 seed=1')
         """
-        level = _iso_level(c10, iso_class)
-        waviness = check.positive("waviness", waviness)
-        try:
-            low, high = (float(b) for b in band)
-        except (TypeError, ValueError):
-            raise ValueError(
-                f"band={band!r} must be two frequencies (low, high) in cycle/m"
-            ) from None
-        if not (0 < low < high and math.isfinite(high)):
-            raise ValueError(f"band={band!r} must satisfy 0 < low < high (cycle/m)")
+        level = iso_level(c10, iso_class)
+        waviness = check_range("waviness", waviness)
+        seed = check_seed(seed)
+        check_stations(length, spacing, start)
+        low, high = iso_band(band, float(spacing))
+        check_iso_rms(level, waviness, max(low, 1.0 / float(length)), high)
         x = _stations(length, spacing, start)
         spacing = float(spacing)
-        if high >= 0.5 / spacing:
-            raise ValueError(
-                f"band={band!r} reaches {high:g} cycle/m but spacing={spacing!r} m resolves "
-                f"only up to {0.5 / spacing:g} cycle/m; use a spacing below {0.5 / high:g} m "
-                "or lower band[1]"
-            )
         # _stations puts every station on the grid start + j*spacing except perhaps the last
         last = (x[-1] - start) / spacing
         regular = x.size if abs(last - round(last)) < 1e-6 else x.size - 1
@@ -308,8 +395,8 @@ class Profile:
         >>> round(float(p.elevation_at(10.0)), 4), float(p.elevation_at(9.4))
         (0.02, 0.0)
         """
-        width = check.positive("width", width)
-        height = _finite("height", height)
+        width = check_range("feature_length", width, "width")
+        height = check_range("unevenness", height, "height")
         x = _stations(length, spacing, start)
         u = (x - _finite("position", position)) / width + 0.5
         inside = (u > 0.0) & (u < 1.0)
@@ -335,8 +422,9 @@ class Profile:
         >>> [round(float(p.elevation_at(s)), 4) for s in (1.0, 4.0, 6.0, 9.0)]
         [0.0, 0.005, 0.01, 0.01]
         """
-        run = check.positive("run", run)
+        run = check_range("feature_length", run, "run")
         position, rise = _finite("position", position), _finite("rise", rise)
+        check_range("grade", rise / run, f"rise/run (rise={rise!r}, run={run!r})")
         x = _with_stations(_stations(length, spacing, start), (position, position + run))
         elevation = rise * np.clip((x - position) / run, 0.0, 1.0)
         return cls(x, elevation, name=f"ramp {rise * 1e3:g} mm over {run:g} m")
@@ -360,7 +448,8 @@ class Profile:
         >>> float(p.elevation_at(5.0)), float(p.elevation_at(6.0))
         (0.0, 0.01)
         """
-        position, height = _finite("position", position), _finite("height", height)
+        position = _finite("position", position)
+        height = check_range("unevenness", height, "height")
         x = _with_stations(_stations(length, spacing, start), (position,))
         elevation = np.where(x > position, height, 0.0)
         return cls(x, elevation, name=f"step {height * 1e3:g} mm")
@@ -396,7 +485,8 @@ class Profile:
         >>> Profile.flat(10.0, 1.0).shifted(5.0).start
         5.0
         """
-        return Profile(self.x + float(offset), self.elevation.copy(), name=self.name)
+        offset = check.finite("offset", offset)
+        return Profile(self.x + offset, self.elevation.copy(), name=self.name)
 
     def segment(self, start: float, stop: float) -> Profile:
         """The part of the road between stations ``start`` and ``stop`` [m] (ends interpolated).
@@ -404,6 +494,7 @@ class Profile:
         >>> Profile.flat(10.0, 1.0).segment(2.5, 7.5).length
         5.0
         """
+        start, stop = check.finite("start", start), check.finite("stop", stop)
         if not (self.x[0] <= start < stop <= self.x[-1]):
             raise ValueError(
                 f"segment({start!r}, {stop!r}) must satisfy {self.x[0]:g} <= start < stop <= "
@@ -432,14 +523,8 @@ class Profile:
 
 
 def _finite(name: str, value: float) -> float:
-    """``value`` as a finite float (any sign), else ``ValueError`` naming ``name``."""
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name}={value!r} must be a number") from None
-    if not math.isfinite(number):
-        raise ValueError(f"{name}={value!r} must be a finite number")
-    return number
+    """``value`` as a finite float (any sign): ``TypeError`` for text, ``ValueError`` for NaN."""
+    return check.finite(name, value)
 
 
 def _with_stations(x: np.ndarray, extra: tuple[float, ...]) -> np.ndarray:
@@ -449,12 +534,28 @@ def _with_stations(x: np.ndarray, extra: tuple[float, ...]) -> np.ndarray:
     return np.sort(np.concatenate((x, inside))) if inside else x
 
 
-def _stations(length: float, spacing: float, start: float = 0.0) -> np.ndarray:
-    """Stations ``start, start + spacing, ...`` covering ``length`` (the last one at the end)."""
-    length = check.positive("length", length)
-    spacing = check.positive("spacing", spacing)
+def check_stations(length: object, spacing: object, start: object = 0.0) -> int:
+    """Check a generated road's ``length``, ``spacing`` and ``start`` and return its number of
+    samples, before anything is allocated (at most :data:`~vbi_lib.ranges.MAX_SAMPLES`)."""
+    length = check_range("profile_length", length, "length")
+    spacing = check_range("spacing", spacing)
+    check.finite("start", start)
     if spacing > length:
         raise ValueError(f"spacing={spacing!r} is longer than length={length!r}")
+    samples = math.floor(length / spacing + 1e-9) + 2
+    if samples > MAX_SAMPLES:
+        raise ValueError(
+            f"length={length!r} m every spacing={spacing!r} m asks for {samples:.3g} samples; "
+            f"a generated road has at most {MAX_SAMPLES:.0e} (raise the spacing or shorten "
+            "the road)"
+        )
+    return samples
+
+
+def _stations(length: float, spacing: float, start: float = 0.0) -> np.ndarray:
+    """Stations ``start, start + spacing, ...`` covering ``length`` (the last one at the end)."""
+    check_stations(length, spacing, start)
+    length, spacing, start = float(length), float(spacing), float(start)
     count = int(math.floor(length / spacing + 1e-9))
     x = start + spacing * np.arange(count + 1)
     if length - count * spacing > 1e-9 * length:

@@ -6,11 +6,12 @@ predictor of dynamic amplification (the third, a vehicle-only contact-force metr
 
 **ISO 8608 parameters** (:func:`fit_iso8608`, :func:`profile_spectrum`).  The displacement
 PSD of the road is modelled as :math:`G_d(n) = C_{10} (n / n_0)^{-w}`, :math:`n_0 = 0.1`
-cycle/m (study equation 87).  The one-sided PSD is estimated with Welch's method (Hann
-window, 50 % overlap, each segment detrended with a straight line), averaged over
-1/3-octave bands centred on :math:`0.1 \cdot 2^{k/3}` cycle/m, and a straight line is fitted
-to :math:`\log G_d` against :math:`\log (n / n_0)` (each band weighted by the square root of
-its number of Welch bins), giving :math:`C_{10}` and :math:`w`.
+cycle/m (study equation 87, :eq:`study-87` in the book).  The one-sided PSD is estimated
+with Welch's method (Hann window, 50 % overlap, each segment detrended with a straight
+line), averaged over 1/3-octave bands centred on :math:`0.1 \cdot 2^{k/3}` cycle/m, and a
+straight line is fitted to :math:`\log G_d` against :math:`\log (n / n_0)` (each band
+weighted by the square root of its number of Welch bins), giving :math:`C_{10}` and
+:math:`w`.
 
 **International Roughness Index** (:func:`iri`).  The golden quarter car (per unit sprung
 mass: tyre :math:`k_1 = 653\ s^{-2}`, suspension :math:`k_2 = 63.3\ s^{-2}`, damper
@@ -45,6 +46,7 @@ import scipy.signal
 
 from . import _validation as check
 from .profiles import ISO_BAND, Profile
+from .ranges import RANGES, outside_note, warn_outside
 
 #: Golden quarter car, per unit sprung mass: k1 [1/s^2], k2 [1/s^2], c [1/s], mu [-].
 GOLDEN_CAR = {"k1": 653.0, "k2": 63.3, "c": 6.0, "mu": 0.15}
@@ -149,6 +151,22 @@ def profile_spectrum(
     segment_length
         Welch segment length [m]; default a quarter of the profile, at most 250 m.
 
+    Raises
+    ------
+    TypeError
+        ``profile`` that is not a :class:`~vbi_lib.Profile`, a band that is not two numbers.
+    ValueError
+        A profile too short for two 1/3-octave bands, or one with no roughness to fit (a
+        straight line or grade: the fitted ``c10`` would be below the range of validity of
+        ``c10``, :data:`vbi_lib.ranges.RANGES`), or so rough that no road is (check the
+        elevation unit).
+
+    Warns
+    -----
+    OutsideValidityWarning
+        A fitted ``c10`` or waviness outside the intended range: not a road of ISO 8608
+        classes A to E, or a spectrum whose slope is unlike a road's.
+
     Examples
     --------
     >>> road = Profile.iso8608(2000.0, 0.05, c10=300e-6, waviness=2.0, seed=7)
@@ -161,7 +179,9 @@ def profile_spectrum(
     if segment_length is None:
         segment_length = min(profile.length / 4.0, 250.0)
     segment_length = check.positive("segment_length", segment_length)
-    low, high = (float(b) for b in band)
+    if isinstance(band, str | bytes) or not hasattr(band, "__len__") or len(band) != 2:
+        raise TypeError(f"band={band!r} must be two frequencies (low, high) in cycle/m")
+    low, high = (check.finite(f"band[{i}]", b) for i, b in enumerate(band))
     if not 0 < low < high:
         raise ValueError(f"band={band!r} must satisfy 0 < low < high (cycle/m)")
     per_segment = min(profile.x.size, max(8, int(round(segment_length / spacing))))
@@ -193,15 +213,38 @@ def profile_spectrum(
     band_f, band_g, weight = np.array(band_f), np.array(band_g), np.array(weight)
     design = np.column_stack((np.ones_like(band_f), np.log10(band_f / 0.1)))
     solution = np.linalg.lstsq(design * weight[:, None], np.log10(band_g) * weight, rcond=None)[0]
+    c10, waviness = float(10.0 ** solution[0]), float(-solution[1])
+    _check_fit(profile, c10, waviness)
     return ProfileSpectrum(
         frequency=frequency,
         psd=psd,
         band_frequency=band_f,
         band_psd=band_g,
-        c10=float(10.0 ** solution[0]),
-        waviness=float(-solution[1]),
+        c10=c10,
+        waviness=waviness,
         segment_length=per_segment * spacing,
     )
+
+
+def _check_fit(profile: Profile, c10: float, waviness: float) -> None:
+    """Refuse a fit of a road with no roughness (or an absurd one); warn outside intended use."""
+    low, high = RANGES["c10"].hard
+    if not low <= c10 <= high:
+        why = (
+            "it has no roughness the fit can measure: it is a straight line or grade to "
+            "rounding error (rms under 1 micrometre)"
+            if c10 < low
+            else "no road is this rough: are the elevations in metres?"
+        )
+        raise ValueError(
+            f"profile={profile!r}: the fitted c10={c10:.3g} m^3 lies outside the range of "
+            f"validity of c10 ({RANGES['c10'].hard_text()}); {why}"
+        )
+    notes = [outside_note("c10", c10, "fitted c10"), outside_note("waviness", waviness,
+                                                                   "fitted waviness")]  # fmt: skip
+    for note in notes:
+        if note:
+            warn_outside(f"profile {profile.name!r}: {note}")
 
 
 def fit_iso8608(
@@ -268,8 +311,8 @@ class IriResult:
         Stations bounding each segment [m], shape ``(n_segments,)``; the last segment may be
         shorter than ``segment_length``.
     segment_iri
-        IRI of each segment [m/km], shape ``(n_segments,)``; NaN only for a segment shorter
-        than one sample interval, which holds no slope step (``valid`` is then False).
+        IRI of each segment [m/km], shape ``(n_segments,)``; always finite (a last piece of
+        road too short to hold a slope step joins the segment before it).
     segment_length
         Length asked for [m], or ``None`` (one segment: the whole road).
     name
@@ -361,7 +404,9 @@ def iri(profile: Profile, segment_length: float | None = None) -> IriResult:
         ``None`` for one segment covering the whole profile; otherwise consecutive segments
         of this length [m] from the first station (one run, the car's state carried from
         segment to segment; each slope step is assigned to the segment holding the middle of
-        its 250 mm base).
+        its 250 mm base).  A last piece of road that holds no slope step (shorter than the
+        moving average or a sample interval) joins the segment before it, so the last
+        segment may be up to that much longer than ``segment_length``.
 
     Returns
     -------
@@ -371,8 +416,19 @@ def iri(profile: Profile, segment_length: float | None = None) -> IriResult:
 
     Raises
     ------
+    TypeError
+        ``profile`` that is not a :class:`~vbi_lib.Profile`, ``segment_length`` that is not
+        a number.
     ValueError
-        A profile shorter than the 250 mm moving average, or ``segment_length`` not positive.
+        A profile shorter than the 250 mm moving average, or ``segment_length`` not positive
+        or shorter than the 250 mm moving average or the profile's sample interval.
+
+    Warns
+    -----
+    OutsideValidityWarning
+        A profile shorter than 11 m (the IRI's start-up: the result is that of the start) or
+        sampled more coarsely than every 250 mm (the IRI reads low); see ``iri_length`` and
+        ``iri_spacing`` in :data:`vbi_lib.ranges.RANGES`.
 
     Examples
     --------
@@ -387,9 +443,16 @@ def iri(profile: Profile, segment_length: float | None = None) -> IriResult:
     IriResult('harmonic 10 m', 2000 m: IRI 0.50 m/km)
     """
     profile = _uniform(profile)
+    dx = profile.spacing
     if segment_length is not None:
         segment_length = check.positive("segment_length", segment_length)
-    dx = profile.spacing
+        shortest = max(dx, IRI_BASE)
+        if segment_length < shortest:
+            raise ValueError(
+                f"segment_length={segment_length!r} m is shorter than the IRI's 250 mm moving "
+                f"average or the profile's sample interval ({dx:g} m): segments would hold no "
+                f"slope step; give at least {shortest:g} m"
+            )
     y = profile.elevation
     base = max(1, int(round(IRI_BASE / dx)))
     if y.size <= base:
@@ -397,6 +460,13 @@ def iri(profile: Profile, segment_length: float | None = None) -> IriResult:
             f"profile {profile.name!r} ({profile.length:.3f} m) is shorter than the IRI's "
             f"250 mm moving average; give at least {base + 1} samples"
         )
+    for key, value, name in (
+        ("iri_length", profile.length, "profile length"),
+        ("iri_spacing", dx, "profile spacing"),
+    ):
+        note = outside_note(key, value, name)
+        if note:
+            warn_outside(f"profile {profile.name!r}: {note}")
     lead = min(int(round(IRI_LEAD / dx)), y.size - 1)
     initial = (y[lead] - y[0]) / (lead * dx)
     slope = (y[base:] - y[:-base]) / (base * dx)
@@ -409,13 +479,15 @@ def iri(profile: Profile, segment_length: float | None = None) -> IriResult:
         return IriResult(whole, start, stop, values, None, profile.name)
     centre = profile.x[: slope.size] + 0.5 * base * dx
     count = max(1, math.ceil(profile.length / segment_length - 1e-9))
+    # the last segment holding a slope step takes the rest of the road
+    count = min(count, int((centre[-1] - profile.start) // segment_length) + 1)
     index = np.minimum(((centre - profile.start) // segment_length).astype(np.int64), count - 1)
     sums = np.bincount(index, weights=stroke, minlength=count)
     steps = np.bincount(index, minlength=count)
-    values = np.full(count, np.nan)
-    values[steps > 0] = sums[steps > 0] / steps[steps > 0] * 1000.0
+    values = sums / steps * 1000.0
     start = profile.start + segment_length * np.arange(count)
     stop = np.minimum(start + segment_length, profile.end)
+    stop[-1] = profile.end
     return IriResult(whole, start, stop, values, segment_length, profile.name)
 
 
@@ -429,8 +501,7 @@ def _golden_transition(dt: float) -> tuple[np.ndarray, np.ndarray]:
 
 def _uniform(profile: Profile) -> Profile:
     """The profile itself when evenly sampled, else read at its mean spacing."""
-    if not isinstance(profile, Profile):
-        raise ValueError(f"profile must be a vbi_lib.Profile, got {type(profile).__name__}")
+    check.instance("profile", profile, Profile, "a vbi_lib.Profile")
     steps = np.diff(profile.x)
     spacing = profile.length / steps.size
     if np.abs(steps - spacing).max() <= 1e-6 * spacing:

@@ -4,7 +4,12 @@ r"""The study's data: its printed tables, and the reader of its 239-scenario ass
 its name, ``lbf_in2`` for lb in^2, ``slinch`` for lbf s^2/in).  Each function returns a new
 :class:`pandas.DataFrame`:
 
-* :func:`table_2_13_1`: the validation beam and sprung mass;
+* :func:`table_2_13_1`: the validation beam and sprung mass (:func:`validation_models`
+  builds them);
+* :func:`table_2_13_2`, :func:`table_2_13_3`, :func:`table_2_13_4`: what the study reported
+  from its finite-element (FE) beam runs of the validation (time step, FE against the
+  state-space model, one mode against five); :func:`table_2_13_12`: the decisions of its
+  3D FE moving-mass runs;
 * :func:`table_2_13_8`: the twelve state-space beams of the model assessment, whose EI and
   mass per span follow from the path's midspan stiffness and the first frequency by
   equations (82)-(84) (:meth:`vbi_lib.Bridge.from_midspan_stiffness`);
@@ -19,6 +24,9 @@ README), and :func:`assessment_inputs` turns each scenario row into the model's 
 a :class:`vbi_lib.Bridge`, a :class:`vbi_lib.Vehicle` and a :class:`vbi_lib.Profile`.
 In every scenario the truck starts at station 0 and drives at 720 in/s onto a bridge that
 starts at 3840 in (:data:`ASSESSMENT_SPEED`, :data:`ASSESSMENT_BRIDGE_START`).
+
+Without the data set, :func:`published_assessment_design` builds the same design from the
+printed tables (Tables 2.13.8 to 2.13.11) on roads it generates; it has no FE results.
 
 The data set itself has no licence: it is read from where it lies, never copied.
 """
@@ -42,13 +50,19 @@ __all__ = [
     "ASSESSMENT_SPEED",
     "AssessmentSet",
     "assessment_inputs",
+    "published_assessment_design",
     "read_assessment_set",
     "table_2_13_1",
+    "table_2_13_2",
+    "table_2_13_3",
+    "table_2_13_4",
     "table_2_13_8",
     "table_2_13_9",
     "table_2_13_10",
+    "table_2_13_12",
     "table_2_15_3",
     "table_2_15_4",
+    "validation_models",
 ]
 
 #: Speed of every assessment crossing, 720 in/s [m/s].
@@ -93,6 +107,88 @@ def table_2_13_1() -> pd.DataFrame:
             "vehicle_damping_ratio": [0.10],
         }
     )
+
+
+def validation_models(n_spans: int = 1) -> tuple[Bridge, Vehicle]:
+    """The beam and sprung mass of Table 2.13.1, in SI: one span or two equal spans.
+
+    The study gave both validation beams the same parameters.  The truck's damping ratio is
+    the table's 10 % of critical.
+
+    Parameters
+    ----------
+    n_spans
+        1 or 2.
+
+    Raises
+    ------
+    ValueError
+        ``n_spans`` other than 1 or 2.
+
+    Examples
+    --------
+    >>> bridge, truck = validation_models()
+    >>> round(bridge.first_frequency_hz, 2), round(truck.frequency_hz, 2)
+    (3.0, 4.0)
+    """
+    if n_spans not in (1, 2):
+        raise ValueError(f"n_spans={n_spans!r} must be 1 or 2 (the study's two validation beams)")
+    row = table_2_13_1().iloc[0]
+    bridge = Bridge(
+        row.span_ft * u.ft,
+        n_spans,
+        row.EI_lbf_in2 * u.lbf * u.inch**2,
+        row.mass_per_length_kip_per_ft * u.kip / u.ft / u.g,
+    )
+    mass = row.vehicle_mass_slinch * u.slinch
+    stiffness = row.vehicle_k_lbf_per_in * u.lbf / u.inch
+    damping = 2.0 * row.vehicle_damping_ratio * (mass * stiffness) ** 0.5
+    return bridge, Vehicle(mass, stiffness, damping)
+
+
+def table_2_13_2() -> pd.DataFrame:
+    """Table 2.13.2 as reported: the study's FE beam at 0.0015 s against 0.003 s (one row).
+
+    Midspan displacement of the single-span validation beam: the largest and the mean
+    absolute difference of the two runs, in inches and in per cent of the largest downward
+    displacement at 0.0015 s.  Columns ``max_diff_in``, ``max_diff_percent``, ``mae_in``,
+    ``mae_percent``.
+
+    >>> table_2_13_2().iloc[0].tolist()
+    [0.001056, 0.22, 0.000308, 0.07]
+    """
+    columns = ["max_diff_in", "max_diff_percent", "mae_in", "mae_percent"]
+    index = pd.Index(["FE dt=0.0015 s vs dt=0.003 s"], name="comparison")
+    return pd.DataFrame([[0.001056, 0.22, 0.000308, 0.07]], columns=columns, index=index)
+
+
+def table_2_13_3() -> pd.DataFrame:
+    """Table 2.13.3 as reported: the study's state-space model against its one-mode FE beam.
+
+    Index ``n_spans`` (1, 2); columns ``state_space_max_in`` and ``fe_max_in`` (largest
+    downward midspan displacement, negative), ``diff_percent``, ``mae_in``, ``mae_percent``
+    (per cent of the FE peak).
+
+    >>> table_2_13_3().loc[2, "diff_percent"]
+    np.float64(8.24)
+    """
+    columns = ["state_space_max_in", "fe_max_in", "diff_percent", "mae_in", "mae_percent"]
+    rows = [[-0.54011, -0.47087, 14.70, 0.023058, 4.90], [-0.26863, -0.24819, 8.24, 0.024253, 9.77]]
+    return pd.DataFrame(rows, columns=columns, index=pd.Index([1, 2], name="n_spans"))
+
+
+def table_2_13_4() -> pd.DataFrame:
+    """Table 2.13.4 as reported: the study's two-span FE beam with one mode against five.
+
+    One row: ``one_mode_max_in``, ``five_modes_max_in`` (largest downward midspan
+    displacement), ``diff_percent``, ``mae_in``, ``mae_percent`` (per cent of the five-mode
+    peak).
+
+    >>> table_2_13_4().iloc[0].tolist()
+    [-0.2482, -0.3048, 18.58, 0.0673, 22.09]
+    """
+    columns = ["one_mode_max_in", "five_modes_max_in", "diff_percent", "mae_in", "mae_percent"]
+    return pd.DataFrame([[-0.2482, -0.3048, 18.58, 0.0673, 22.09]], columns=columns)
 
 
 def table_2_13_8() -> pd.DataFrame:
@@ -183,6 +279,31 @@ def table_2_13_10() -> pd.DataFrame:
     )
 
 
+def table_2_13_12() -> pd.DataFrame:
+    """Table 2.13.12: the decisions of the study's 3D FE moving-mass runs (LUSAS IMDPlus).
+
+    Index ``decision``; columns ``selection`` (as printed, text) and ``step`` (of the
+    study's six-step procedure).
+
+    >>> table_2_13_12().loc["time integration scheme", "selection"]
+    'Hilber-Hughes-Taylor (HHT)'
+    """
+    rows = {
+        "modes solved for and included": ("15", "1, 4"),
+        "load increment along the path": ("6 in", "2"),
+        "time integration scheme": ("Hilber-Hughes-Taylor (HHT)", "4"),
+        "profile interpolation": ("linear", "4"),
+        "structural damping": ("1 %", "4"),
+        "vehicle speed": ("720 in/s", "4"),
+        "time step": ("0.0015 s", "4"),
+    }
+    return pd.DataFrame(
+        list(rows.values()),
+        columns=["selection", "step"],
+        index=pd.Index(list(rows), name="decision"),
+    )
+
+
 def table_2_15_3() -> pd.DataFrame:
     """Table 2.15.3: the four bridges of the parametric study (100 ft, 2000 slinch in all).
 
@@ -244,12 +365,12 @@ class AssessmentSet:
     profiles
         The roads by file name, stations and elevations in metres, first elevation zero.
     folder
-        The folder read.
+        The folder read (None for :func:`published_assessment_design`).
     """
 
     table: pd.DataFrame = field(repr=False)
     profiles: dict[str, Profile] = field(repr=False)
-    folder: Path
+    folder: Path | None
 
     def __iter__(self) -> Iterator[object]:
         return iter((self.table, self.profiles))
@@ -258,10 +379,8 @@ class AssessmentSet:
         return len(self.table)
 
     def __repr__(self) -> str:
-        return (
-            f"AssessmentSet({len(self.table)} scenarios, {len(self.profiles)} profiles "
-            f"from {str(self.folder)!r})"
-        )
+        source = "generated" if self.folder is None else f"from {str(self.folder)!r}"
+        return f"AssessmentSet({len(self.table)} scenarios, {len(self.profiles)} profiles {source})"
 
 
 def read_assessment_set(folder: str | Path) -> AssessmentSet:
@@ -328,6 +447,64 @@ def read_assessment_set(folder: str | Path) -> AssessmentSet:
         road = read_profile(file, unit="in", name=str(name))
         profiles[str(name)] = Profile(road.x, road.elevation - road.elevation[0], name=road.name)
     return AssessmentSet(table, profiles, folder)
+
+
+def published_assessment_design(seed: int = 1) -> AssessmentSet:
+    """The assessment's design from the printed tables, on roads generated here (no FE DAFs).
+
+    Every beam of Table 2.13.8 with its matching truck (Table 2.13.9) and the 2.8 Hz truck
+    (Table 2.13.10), on each of twelve ISO 8608 roads of Table 2.13.11 (C10 300e-6 and
+    600e-6 m^3, waviness 2, 3 and 4, two phase draws each, 650 ft at 1 in): 288 scenarios
+    in the columns :func:`assessment_inputs` reads.  The study's own set (239 of these
+    combinations on its own roads, with FE results) is :func:`read_assessment_set`.
+
+    Parameters
+    ----------
+    seed
+        Seed of the first phase draw (the second is ``seed + 1``).
+
+    Returns
+    -------
+    AssessmentSet
+        ``folder`` is None: nothing was read.
+
+    Examples
+    --------
+    >>> design = published_assessment_design()
+    >>> len(design), len(design.profiles), design.table.vehicle.nunique()
+    (288, 12, 4)
+    """
+    roads = {}
+    for c10 in (300e-6, 600e-6):
+        for waviness in (2, 3, 4):
+            for draw in (1, 2):
+                name = f"ISO_C10-{c10 * 1e6:.0f}e-06_w-{waviness}_{draw}"
+                p = Profile.iso8608(
+                    650 * u.ft, 1 * u.inch, c10=c10, waviness=waviness, seed=seed + draw - 1
+                )
+                roads[name] = Profile(p.x, p.elevation - p.elevation[0], name=name)
+    slow = table_2_13_10().iloc[0]
+    rows = []
+    for beam in table_2_13_8().itertuples():
+        own = table_2_13_9().loc[beam.span_ft]
+        trucks = {f"{own.damped_frequency_hz:g} Hz damped (10%)": own, "2.8 Hz (20%)": slow}
+        for label, truck in trucks.items():
+            rows += [
+                {
+                    "span_ft": beam.span_ft,
+                    "n_spans": beam.n_spans,
+                    "path": beam.path,
+                    "k_mid_lbf_per_in": beam.k_mid_lbf_per_in,
+                    "bridge_f1_hz": beam.f1_hz,
+                    "vehicle": label,
+                    "vehicle_mass_slinch": truck.mass_slinch,
+                    "vehicle_k_lbf_per_in": truck.k_lbf_per_in,
+                    "vehicle_c_lbf_s_per_in": truck.c_lbf_s_per_in,
+                    "profile": name,
+                }
+                for name in roads
+            ]
+    return AssessmentSet(pd.DataFrame(rows), roads, None)
 
 
 def assessment_inputs(

@@ -3,11 +3,21 @@
 Every warning is a :class:`VbiWarning`, so one filter silences or raises them all
 (``warnings.simplefilter("error", vbi.VbiWarning)``).  Results that leave validity also say so
 in their ``notes`` and summary columns; the warning is the signal for scripts.
+
+The ranges of validity of the inputs, and the checks that raise
+:class:`OutsideValidityWarning`, are in :mod:`vbi_lib.ranges`.
 """
 
 from __future__ import annotations
 
-__all__ = ["ContactLossWarning", "VbiWarning", "contact_note", "flight_note"]
+__all__ = [
+    "ContactLossWarning",
+    "FailedRowsWarning",
+    "OutsideValidityWarning",
+    "VbiWarning",
+    "contact_note",
+    "flight_note",
+]
 
 
 class VbiWarning(UserWarning):
@@ -21,6 +31,18 @@ class ContactLossWarning(VbiWarning):
     which the computed contact force becomes tensile is outside the model's validity, and its
     DAF is not a prediction of a real truck's effect.
     """
+
+
+class OutsideValidityWarning(VbiWarning):
+    """An input lies inside its hard limits but outside the model's intended use.
+
+    The result is computed, but it is not a prediction the model was built and checked for;
+    :data:`vbi_lib.ranges.RANGES` gives the intended (soft) range of each input and why.
+    """
+
+
+class FailedRowsWarning(VbiWarning):
+    """Some rows of a study failed; the others are kept and the ``error`` column says why."""
 
 
 def contact_note(min_ratio: float, tension_fraction: float) -> str:

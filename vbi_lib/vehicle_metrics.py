@@ -3,8 +3,8 @@ r"""A vehicle-only predictor of dynamic amplification: the contact force on a ri
 **Contact-force amplification** (:func:`contact_force_amplification`).  The study's
 vehicle-only metric: the truck (a sprung mass) rides the profile on a rigid road, its contact
 force is weighted by a half sine over each span (the span's midspan influence line shape), and
-the peak is divided by the weight.  The sprung mass is driven by a piecewise-linear road, so
-it too is stepped exactly with a matrix exponential.
+the peak is divided by the weight (:eq:`eq-roads-window` in the book).  The sprung mass is
+driven by a piecewise-linear road, so it too is stepped exactly with a matrix exponential.
 
 The study weighed it in its chapter 14 against the DAF of the full model (Figure 2.14.3).
 """
@@ -67,6 +67,7 @@ def quarter_car_contact_force(
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Contact force of a sprung mass riding ``profile`` on a rigid road (decoupled model, 92).
 
+    The book writes the decoupled force as :eq:`study-92`.
     ``m u'' = F``, ``F = k (Delta - u) + c (Delta' - u')`` with the profile linear between
     samples, so over each step the input rate is constant and the step is exact:
     the augmented state ``(u, u', Delta, Delta')`` is advanced with ``exp(M h)``.  The mass
@@ -158,10 +159,8 @@ def contact_force_amplification(
     """
     speed = check.positive("speed", speed)
     span = check.positive("span", span)
-    bridge_start = float(bridge_start)
-    if isinstance(n_spans, bool) or int(n_spans) != n_spans or n_spans < 1:
-        raise ValueError(f"n_spans={n_spans!r} must be a whole number >= 1")
-    n_spans = int(n_spans)
+    bridge_start = check.finite("bridge_start", bridge_start)
+    n_spans = check.integer("n_spans", n_spans, low=1)
     end = bridge_start + n_spans * span
     if not (profile.start <= bridge_start and end <= profile.end):
         raise ValueError(

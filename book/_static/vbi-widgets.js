@@ -4,9 +4,14 @@
   // "@jupyter-widgets/html-manager/dist/libembed-amd", which RequireJS would look up beside
   // the page; point that name at the copy in _static/vendor, found from this script's own
   // address, so that it works at every depth of the book, served or opened as a file.
+  // Some widget views (the explorers' controls) inject the manager's Font Awesome styles a
+  // second time with "@jupyter-widgets/<font file>" as the address: map that prefix to the
+  // same folder, which holds the font files too.
   var here = document.currentScript.src;
   var vendor = here.slice(0, here.lastIndexOf("/") + 1) + "vendor/html-manager";
-  require.config({ paths: { "@jupyter-widgets/html-manager/dist": vendor } });
+  require.config({
+    paths: { "@jupyter-widgets/html-manager/dist": vendor, "@jupyter-widgets": vendor },
+  });
 
   // 2. The manager typesets widget labels with MathJax 2's MathJax.Hub.Queue; the book loads
   // MathJax 3, which has no Hub. Give every object that becomes window.MathJax (first the

@@ -194,9 +194,50 @@ def test_batch_inputs_are_checked_and_the_crossing_named(
         vbi.simulate_many(*args.values(), modes=modes)
 
 
-def test_a_numeric_bridge_start_given_as_text_is_read_as_simulate_reads_it() -> None:
+def test_a_bridge_start_given_as_text_is_refused_as_simulate_refuses_it() -> None:
+    """The type policy (issue 17): text is no number, in a batch as in one crossing."""
     bridge, vehicle, road, speed, start = small()
-    batch = vbi.simulate_many(bridge, vehicle, road, [speed, speed], [start, str(start)])
-    np.testing.assert_array_equal(batch.daf[0], batch.daf[1])
-    single = vbi.simulate(bridge, vehicle, road, speed, str(start))
-    assert single.daf[0] == pytest.approx(batch.daf[1, 0], rel=1e-10)
+    with pytest.raises(TypeError, match="bridge_start='5.0' must be a number") as single:
+        vbi.simulate(bridge, vehicle, road, speed, str(start))
+    with pytest.raises(TypeError, match="crossing 1: ") as batch:
+        vbi.simulate_many(bridge, vehicle, road, [speed, speed], [start, str(start)])
+    assert str(batch.value) == f"crossing 1: {single.value}"
+
+
+def test_a_batch_checks_steps_and_ranges_as_simulate_does() -> None:
+    """Reference: :func:`vbi.simulate` of each crossing.  A batch finds the crossings that
+    need a check on their grid with array bounds; the verdicts must be simulate's: the same
+    refusal of an unstable RK4 step, no warning for a long ``dt`` that the road's samples cut
+    short, and one warning counting the crossings simulate warns of."""
+    bridge, vehicle, _, speed, start = small()
+    road = vbi.Profile.flat(45.0, 2.5)  # samples far apart: the default step sets the steps
+    default = vbi.simulate(bridge, vehicle, road, speed, start).dt  # 0.1 / omega_max, or less
+    fine = vbi.Profile(road.x, np.where(road.x > 20.0, 1e-3, 0.0))  # a step: not a line
+    fine = fine.resampled(0.002)  # samples every 2 mm: steps of 0.1 ms at 20 m/s
+    long = 60.0 * default  # the samples cut it to 125 ms, omega_max dt 3.8: RK4 refuses it
+    with pytest.raises(ValueError, match="omega_max dt of at most 2") as single:
+        vbi.simulate(bridge, vehicle, road, speed, start, dt=long)
+    with pytest.raises(ValueError) as batch:
+        vbi.simulate_many(bridge, vehicle, [fine, road], speed, start, dt=long)
+    assert str(batch.value) == f"crossing 1: {single.value}"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", vbi.OutsideValidityWarning)
+        alone = vbi.simulate(bridge, vehicle, fine, speed, start, dt=long)
+        many = vbi.simulate_many(bridge, vehicle, [fine, fine], speed, start, dt=long)
+    assert alone.dt < default  # the samples set the step, not dt
+    np.testing.assert_allclose(many.daf[0], alone.daf, rtol=1e-10)
+    coarse = fine.resampled(0.5)  # fine enough at 20 m/s, not at 1 m/s (rule 32)
+    speeds = [speed, 50.0, speed, 1.0]  # 50 m/s is above 150 km/h; 1 m/s samples coarsely
+    with pytest.warns(vbi.OutsideValidityWarning) as caught:
+        vbi.simulate_many(bridge, vehicle, coarse, speeds, start)
+    expected = []
+    for i, v in enumerate(speeds):
+        with warnings.catch_warnings(record=True) as seen:
+            warnings.simplefilter("always", vbi.OutsideValidityWarning)
+            vbi.simulate(bridge, vehicle, coarse, v, start)
+        if any(issubclass(w.category, vbi.OutsideValidityWarning) for w in seen):
+            expected.append(i)
+    messages = [str(w.message) for w in caught if "crossings have inputs" in str(w.message)]
+    assert len(messages) == 1, messages
+    assert messages[0].startswith(f"{len(expected)} of 4 crossings have inputs outside")
+    assert f"(crossing {expected[0]}: " in messages[0]

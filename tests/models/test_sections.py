@@ -257,7 +257,7 @@ def test_sections_must_be_stations() -> None:
                        1.0, model="modal", modes=2)  # fmt: skip
     with pytest.raises(ValueError, match=r"x=\[\] must give one or more stations"):
         run.sections([])
-    with pytest.raises(ValueError, match="x='mid' must be stations"):
+    with pytest.raises(TypeError, match="x='mid' must be stations"):
         run.moment_at("mid")
     # the static counterpart is shared by crossings of the same bridge and vehicle
     again = vbi.simulate(bridge, vbi.Vehicle(1e4, 1e6, 0.0), vbi.Profile.flat(12.0, 0.05),

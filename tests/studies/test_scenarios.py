@@ -101,5 +101,5 @@ def test_unknown_columns_and_bad_values_are_named() -> None:
     assert pool.submitted == 0
     with pytest.raises(ValueError, match="unknown axes"):
         studies.grid(1, 2, 3, 4, 5, speeeds=[1.0])
-    with pytest.raises(ValueError, match="exactly one of c10 and iso_class"):
+    with pytest.raises(ValueError, match="exactly one of c10"):
         studies.ISOProfile(100.0, 0.025)

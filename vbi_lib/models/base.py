@@ -33,6 +33,7 @@ with more spans come from the crossing's histories (:meth:`CrossingModel.span_pe
 from __future__ import annotations
 
 import math
+import weakref
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -42,8 +43,9 @@ import numpy as np
 from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
+from ..ranges import check_range, outside_note
 from ..units import g as GRAVITY
-from ..vehicles import Vehicle, as_system
+from ..vehicles import Vehicle, VehicleSystem, as_system
 from .grid import Grid, node_grid
 
 __all__ = ["Batch", "CrossingModel", "Grid", "check_crossing", "node_grid"]
@@ -82,23 +84,17 @@ def check_crossing(
     ------
     TypeError
         ``bridge``, ``vehicle`` or ``profile`` is not a :class:`~vbi_lib.Bridge`, one of the
-        library's vehicles (:mod:`vbi_lib.vehicles`) or a :class:`~vbi_lib.Profile`.
+        library's vehicles (:mod:`vbi_lib.vehicles`) or a :class:`~vbi_lib.Profile`; a speed
+        or station that is not a number.
     ValueError
-        A speed that is not a positive number, a station that is not finite, or a profile that
-        does not cover the approach and the bridge.
+        A speed outside its hard range (:data:`vbi_lib.ranges.RANGES`, ``speed``), a station
+        that is not finite, or a profile that does not cover the approach and the bridge.
     """
-    if not isinstance(bridge, Bridge):
-        raise TypeError(f"bridge must be a vbi.Bridge, got {type(bridge).__name__}")
+    check.instance("bridge", bridge, Bridge, "a vbi.Bridge")
     wheelbase = as_system(vehicle).wheelbase
-    if not isinstance(profile, Profile):
-        raise TypeError(f"profile must be a vbi.Profile, got {type(profile).__name__}")
-    speed = check.positive("speed", speed)
-    try:
-        bridge_start = float(bridge_start)
-    except (TypeError, ValueError):
-        raise ValueError(f"bridge_start={bridge_start!r} must be a station in metres") from None
-    if not math.isfinite(bridge_start):
-        raise ValueError(f"bridge_start={bridge_start!r} must be a finite station in metres")
+    check.instance("profile", profile, Profile, "a vbi.Profile")
+    speed = check_range("speed", speed, warn=False)  # the crossing notes and warns
+    bridge_start = check.finite("bridge_start", bridge_start)
     end = bridge_start + bridge.length
     if bridge_start < profile.start or end > profile.end + 1e-9 * max(1.0, abs(end)):
         raise ValueError(
@@ -227,6 +223,82 @@ def parameters(
     return params
 
 
+def check_step(dt_max: float, default_dt: float, dt: float | None, hard: float) -> str | None:
+    """Check the largest step taken against the model's default ``0.1 / omega_max``.
+
+    ``omega_max dt`` beyond ``hard`` (the model's :attr:`CrossingModel.max_omega_dt`) is
+    refused; beyond the soft limit of ``step_accuracy`` (:data:`vbi_lib.ranges.RANGES`), the
+    sentence for the notes is returned.
+
+    Raises
+    ------
+    ValueError
+        A step so long that the model's integrator is unstable.
+    """
+    ratio = DEFAULT_OMEGA_DT * dt_max / default_dt
+    if ratio > hard:
+        longest = hard * default_dt / DEFAULT_OMEGA_DT
+        raise ValueError(
+            f"dt={dt!r} must give omega_max dt of at most {hard:g} (the model's integrator is "
+            f"unstable beyond); its steps of up to {dt_max:.3g} s give {ratio:.3g}: give "
+            f"dt <= {longest:.3g} s or leave it to the model (dt=None)"
+        )
+    return outside_note("step_accuracy", ratio, f"omega_max dt (dt={dt!r} s)")
+
+
+def input_notes(
+    bridge: Bridge, system: VehicleSystem, profile: Profile, speed: float, default_dt: float
+) -> tuple[list[str], list[str]]:
+    """Sentences on inputs outside their intended (soft) ranges, for a crossing's notes.
+
+    Returns the sentences on the bridge and the vehicle (their constructors warned already:
+    the span, mass, damping and first frequency, the vehicle's weight and frequencies) and
+    those on the crossing itself (the speed, and the profile's sampling against the study's
+    rule (32): at least two samples per period of the highest frequency the model follows,
+    ``omega_max = 0.1 / dt_default``, at this speed; a road that is a straight line is
+    exact at any spacing).
+    """
+    objects = [
+        *(outside_note("span", length, "span") for length in sorted(set(bridge.spans))),
+        outside_note("mass_per_length", bridge.mass_per_length),
+        outside_note("bridge_frequency", bridge.first_frequency_hz, "first_frequency_hz"),
+        outside_note("bridge_damping_ratio", bridge.damping_ratio, "damping_ratio"),
+        outside_note("vehicle_weight", system.weight, "vehicle weight"),
+        *(
+            outside_note("vehicle_frequency", float(f), f"vehicle frequency {i + 1}")
+            for i, f in enumerate(system.frequencies_hz)
+        ),
+    ]
+    crossing = [outside_note("speed", speed)]
+    spacing = _uneven_spacing(profile)
+    if spacing is not None:
+        f_max = DEFAULT_OMEGA_DT / default_dt / (2.0 * math.pi)
+        crossing.append(
+            outside_note(
+                "sample_spacing",
+                spacing * 2.0 * f_max / speed,
+                f"profile spacing {spacing:.3g} m x 2 x {f_max:.3g} Hz / speed",
+            )
+        )
+    return [n for n in objects if n], [n for n in crossing if n]
+
+
+_SPACINGS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _uneven_spacing(profile: Profile) -> float | None:
+    """The largest sample interval of a road that is not a straight line [m], else ``None``
+    (once per profile while it lives: a batch shares its roads)."""
+    if profile not in _SPACINGS:
+        spacing = None
+        if profile.x.size > 2:
+            slopes = np.diff(profile.elevation) / np.diff(profile.x)
+            if np.ptp(slopes) > 1e-9 * max(1e-12, float(np.abs(slopes).max())):
+                spacing = float(np.diff(profile.x).max())
+        _SPACINGS[profile] = spacing
+    return _SPACINGS[profile]
+
+
 # ---------------------------------------------------------------------------- kernel helpers
 @numba.njit(cache=True)
 def hermite_min(a0, a1, d0, d1, h):
@@ -346,8 +418,13 @@ class CrossingModel:
         One line for listings: the bridge model and the integrator.
     result_type
         The :class:`~vbi_lib.models.results.Crossing` subclass the driver returns.
+    max_omega_dt
+        The largest ``omega_max dt`` the integrator tolerates (an explicit scheme's stability
+        limit, with a margin); ``inf`` for an unconditionally stable one.  The driver refuses
+        longer steps (:func:`check_step`).
     """
 
+    max_omega_dt: ClassVar[float] = math.inf
     name: ClassVar[str]
     description: ClassVar[str]
     result_type: ClassVar[type]

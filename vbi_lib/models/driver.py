@@ -16,9 +16,11 @@ import numpy as np
 from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
+from ..ranges import MAX_NODES, RANGES, check_range, warn_outside
 from ..validity import ContactLossWarning, contact_note, flight_note
 from ..vehicles import as_system
 from .base import (
+    DEFAULT_OMEGA_DT,
     PEAK_SLOTS,
     S_BRIDGE_TIME,
     S_FLIGHT_TIME,
@@ -30,7 +32,10 @@ from .base import (
     SUMMARY_SIZE,
     Batch,
     CrossingModel,
+    _uneven_spacing,
     check_crossing,
+    check_step,
+    input_notes,
     node_grid,
 )
 from .modal import Modal
@@ -47,10 +52,24 @@ MODELS: dict[str, type[CrossingModel]] = {
 def _model(model: object) -> type[CrossingModel]:
     if isinstance(model, type) and issubclass(model, CrossingModel):
         return model
-    if not isinstance(model, str) or model not in MODELS:
+    if not isinstance(model, str):
+        raise TypeError(f"model={model!r} must be the name of a crossing model ({list(MODELS)})")
+    if model not in MODELS:
         listing = "; ".join(f"{k!r}: {v.description}" for k, v in MODELS.items())
         raise ValueError(f"model={model!r} is not a crossing model; use one of {listing}")
     return MODELS[model]
+
+
+def _modes(modes: object) -> int | None:
+    """``None``, or a number of modes: an int within the range of ``modes``."""
+    if modes is None:
+        return None
+    return int(check_range("modes", check.integer("modes", modes), warn=False))
+
+
+def _never_pushed_down(peaks: np.ndarray) -> np.ndarray:
+    """Spans whose midspan never went down while the vehicle was on them (peak <= 0)."""
+    return ~(peaks > 0.0) & ~np.isnan(peaks)
 
 
 def _contact(summary: np.ndarray, weight: float, unilateral: object = False) -> tuple:
@@ -135,15 +154,23 @@ def simulate(
     Crossing
         The model's subclass of :class:`~vbi_lib.models.results.Crossing`; its
         ``moment_at``, ``shear_at``, ``displacement_at`` and ``sections`` give the responses
-        at any section.
+        at any section.  The DAF of a span the vehicle never pushed down (its midspan only
+        rose while the vehicle was on it) is NaN, and ``notes`` says so.
 
     Raises
     ------
     TypeError, ValueError
-        Inputs of the wrong type or outside what is allowed, named in the message.
+        Inputs of the wrong type or outside what is allowed, named in the message: the hard
+        ranges of :data:`vbi_lib.ranges.RANGES` (``speed``, ``modes``, ``step_accuracy``),
+        and more than :data:`~vbi_lib.ranges.MAX_NODES` nodes, counted before anything is
+        allocated.
 
     Warns
     -----
+    OutsideValidityWarning
+        The speed, the profile's sampling (the study's rule (32)) or the step outside their
+        intended ranges; the sentence is also in ``notes``, with those on the bridge and the
+        vehicle (which their constructors warned of).
     ContactLossWarning
         A bilateral contact force became tensile on the bridge: the result is outside the
         model's validity (also in ``notes`` and ``lost_contact``).  A unilateral tyre that
@@ -169,19 +196,30 @@ def simulate(
     coupled = check.flag("coupled", coupled)
     convective = check.flag("convective", convective)
     free_vibration = check.non_negative("free_vibration", free_vibration)
+    modes = _modes(modes)
+    given = None if dt is None else check.positive("dt", dt)
     setup = kind(bridge, vehicle, speed, bridge_start, coupled=coupled, convective=convective,
                  modes=modes)  # fmt: skip
-    notes = []
-    if dt is None:
-        dt, note = setup.default_time_step()
-        notes.append(note)
-    else:
-        dt = check.positive("dt", dt)
+    default, note = setup.default_time_step()
+    notes = [note] if given is None else []
+    dt = default if given is None else given
     stop = bridge_start + bridge.length + system.wheelbase + speed * free_vibration
     grid = node_grid(bridge, profile, speed, bridge_start, dt, stop, vehicle=system)
+    objects, outside = input_notes(bridge, system, profile, speed, default)
+    step_note = check_step(grid.dt_max, default, given, kind.max_omega_dt)
+    outside += [step_note] if step_note else []
+    for text in outside:
+        warn_outside(text)
     summary, contact, fields, note = setup.integrate(grid)
-    notes.append(note)
+    notes += [note, *objects, *outside]
     static = setup.static_deflection()
+    peaks = setup.span_peaks(summary, fields, grid)
+    never = _never_pushed_down(peaks)
+    for j in np.flatnonzero(never):
+        notes.append(
+            f"span {j + 1} was never pushed down while the vehicle was on it (its midspan only "
+            "rose): its DAF is not defined and is NaN"
+        )
     min_ratio, tension, flight = _contact(summary, system.weight, system.has_unilateral)
     if flight > 0:
         notes.append(flight_note(float(flight)))
@@ -202,7 +240,7 @@ def simulate(
         contact_force=contact.sum(axis=1),
         axle_contact_force=contact,
         span_of_step=grid.span_of_step,
-        daf=setup.span_peaks(summary, fields, grid) / setup.span_static_deflections(),
+        daf=np.where(never, np.nan, peaks) / setup.span_static_deflections(),
         static_deflection=static,
         dt=grid.dt_max,
         coupled=coupled,
@@ -263,13 +301,14 @@ def _flags(name: str, values: object, n: int) -> np.ndarray:
     return out
 
 
-def _modes(kind: type[CrossingModel], values: object, n: int) -> np.ndarray:
+def _batch_modes(kind: type[CrossingModel], values: object, n: int) -> np.ndarray:
+    """Each crossing's ``modes``, checked as :func:`simulate` checks it (range, then model)."""
     if not _is_list(values):
-        return np.full(n, kind.check_modes(values), np.int64)
+        return np.full(n, kind.check_modes(_modes(values)), np.int64)
     out = np.empty(n, np.int64)
     for i, value in enumerate(values):
         try:
-            out[i] = kind.check_modes(value)
+            out[i] = kind.check_modes(_modes(value))
         except (TypeError, ValueError) as exc:
             raise type(exc)(f"crossing {i}: {exc}") from None
     return out
@@ -316,7 +355,8 @@ def _batch(kind: type[CrossingModel], args: dict[str, Any]) -> Batch:
     for codes, objects, kind_ in ((b, bridges, Bridge), (p, profiles, Profile)):
         wrong = [k for k, obj in enumerate(objects) if not isinstance(obj, kind_)]
         suspects |= np.isin(codes, wrong)
-    suspects |= ~(np.isfinite(speed) & (speed > 0)) | ~np.isfinite(start)
+    low, high = RANGES["speed"].hard
+    suspects |= ~(np.isfinite(speed) & (speed > low) & (speed <= high)) | ~np.isfinite(start)
     for i in np.flatnonzero(suspects):
         speed[i], start[i] = _one_crossing(args, int(i))
     # the profile covers the approach, the bridge and (several axles) the wheelbase beyond
@@ -346,8 +386,70 @@ def _batch(kind: type[CrossingModel], args: dict[str, Any]) -> Batch:
         bridge_start=start,
         coupled=_flags("coupled", args["coupled"], n),
         convective=_flags("convective", args["convective"], n),
-        modes=_modes(kind, args["modes"], n),
+        modes=_batch_modes(kind, args["modes"], n),
     )
+
+
+def _crossing_notes(kind: type[CrossingModel], batch: Batch, i: int, dt: float | None) -> list[str]:
+    """:func:`simulate`'s checks of crossing ``i`` on its grid (node count, step) and its
+    sentences on inputs outside their intended ranges; errors name the crossing."""
+    try:
+        setup = kind.one_of(batch, i)
+        default = setup.default_time_step()[0]
+        system, bridge = setup.system, setup.bridge
+        profile = batch.profiles[batch.profile[i]]
+        stop = setup.bridge_start + bridge.length + system.wheelbase
+        step = default if dt is None else dt
+        grid = node_grid(bridge, profile, setup.speed, setup.bridge_start, step, stop,
+                         vehicle=system)  # fmt: skip
+        notes = input_notes(bridge, system, profile, setup.speed, default)[1]
+        notes.append(check_step(grid.dt_max, default, dt, kind.max_omega_dt))
+    except (TypeError, ValueError) as exc:
+        raise type(exc)(f"crossing {i}: {exc}") from None
+    return [text for text in notes if text]
+
+
+def _check_steps(
+    kind: type[CrossingModel], batch: Batch, defaults: np.ndarray, dt: float | None
+) -> None:
+    """The checks :func:`simulate` makes on a crossing's grid, for a batch.
+
+    Bounds written with arrays (nodes at most ``n_axles (samples + supports) + 3`` plus one
+    per ``speed * dt``; the longest step at most ``dt``) find the crossings that may have too
+    many nodes, too long a step, or an input outside its intended range; those alone get
+    :func:`simulate`'s checks on their grid (:func:`_crossing_notes`), which raise or give the
+    sentences of one warning for the batch.
+    """
+    n = len(batch)
+    step = defaults if dt is None else np.full(n, dt)
+    systems = [as_system(x) for x in batch.vehicles]
+    axles = np.array([x.offsets.size for x in systems])[batch.vehicle]
+    wheelbase = np.array([x.wheelbase for x in systems])[batch.vehicle]
+    samples = np.array([x.x.size for x in batch.profiles])[batch.profile]
+    first = np.array([x.start for x in batch.profiles])[batch.profile]
+    supports = np.array([len(x.supports) for x in batch.bridges])[batch.bridge]
+    length = np.array([x.length for x in batch.bridges])[batch.bridge]
+    stop = batch.bridge_start + length + wheelbase
+    nodes = axles * (samples + supports) + 3 + (stop - first) / (batch.speed * step)
+    suspects = ~(nodes <= MAX_NODES)
+    ratio = DEFAULT_OMEGA_DT * step * (1.0 + 1e-8) / defaults  # omega_max dt, at most
+    suspects |= ratio > min(kind.max_omega_dt, RANGES["step_accuracy"].soft[1])
+    low, high = RANGES["speed"].soft
+    suspects |= (batch.speed < low) | (batch.speed > high)
+    spacing = np.array([_uneven_spacing(x) or np.nan for x in batch.profiles])[batch.profile]
+    f_max = DEFAULT_OMEGA_DT / defaults / (2.0 * math.pi)
+    suspects |= spacing * 2.0 * f_max / batch.speed > RANGES["sample_spacing"].soft[1]
+    outside: dict[int, list[str]] = {}
+    for i in np.flatnonzero(suspects):
+        notes = _crossing_notes(kind, batch, int(i), dt)
+        if notes:
+            outside[int(i)] = notes
+    if outside:
+        first_i = next(iter(outside))
+        warn_outside(
+            f"{len(outside)} of {n} crossings have inputs outside their intended ranges "
+            f"(crossing {first_i}: {'; '.join(outside[first_i])})"
+        )
 
 
 def simulate_many(
@@ -377,17 +479,21 @@ def simulate_many(
     Returns
     -------
     BatchResult
-        ``daf`` has ``max(2, n_spans)`` columns (NaN beyond a crossing's spans).
+        ``daf`` has ``max(2, n_spans)`` columns (NaN beyond a crossing's spans, and for a
+        span the vehicle never pushed down).
 
     Raises
     ------
     TypeError, ValueError
-        As :func:`simulate`, the message starting with the crossing (``"crossing 3: ..."``).
+        As :func:`simulate`, naming the crossing (``crossing 3: speed=...``).
 
     Warns
     -----
     ContactLossWarning
         Once, naming how many crossings lost contact.
+    OutsideValidityWarning
+        Once, naming how many crossings have a speed, a sampling or a step outside their
+        intended ranges (see :func:`simulate`).
 
     Examples
     --------
@@ -413,7 +519,9 @@ def simulate_many(
         dt = check.positive("dt", dt)
     batch = _batch(kind, args)
     n = len(batch)
-    steps = kind.default_time_steps(batch) if dt is None else np.full(n, dt)
+    defaults = kind.default_time_steps(batch)
+    steps = defaults if dt is None else np.full(n, dt)
+    _check_steps(kind, batch, defaults, dt)
     n_spans = batch.n_spans()
     peaks = np.full((n, max(PEAK_SLOTS, int(n_spans.max()))), np.nan)
     summaries = np.full((n, SUMMARY_SIZE), np.nan)
@@ -430,7 +538,8 @@ def simulate_many(
         summaries[i] = summary
         dt_max[i] = grid.dt_max
         peaks[i, : setup.bridge.n_spans] = setup.span_peaks(summary, fields, grid)
-    daf = peaks / kind.span_static_deflections_of(batch)
+    daf = np.where(_never_pushed_down(peaks), np.nan, peaks)
+    daf /= kind.span_static_deflections_of(batch)
     systems = [as_system(x) for x in batch.vehicles]
     weights = np.array([x.weight for x in systems])[batch.vehicle]
     unilateral = np.array([x.has_unilateral for x in systems])[batch.vehicle]

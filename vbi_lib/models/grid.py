@@ -28,6 +28,7 @@ import numpy as np
 
 from ..bridges import Bridge
 from ..profiles import Profile
+from ..ranges import MAX_NODES
 from ..vehicles import VehicleSystem
 from ..vehicles.footprint import footprint_average
 
@@ -36,9 +37,6 @@ W_SAMPLE, W_SUPPORT, W_STOP_TAKEN, W_PIECES, W_PIECE, W_INTERVAL, W_LEFT, W_SLOP
 WALK_INTS = 8
 W_PREVIOUS, W_GAP_START, W_GAP_END, W_WIDTH, W_WIDEST, W_SLOPE = range(6)
 WALK_FLOATS = 6
-
-#: Grids above this many nodes are refused (a step far too small for the run).
-MAX_NODES = 50_000_000
 
 
 @dataclass(frozen=True)
@@ -244,7 +242,7 @@ def _walked_grid(px, pe, supports, edges, bridge_start, step, stop):
     return x, elevation, span_of_step, floats[W_WIDEST]
 
 
-def _sets_grid(
+def _pieces(
     bridge: Bridge,
     profile: Profile,
     speed: float,
@@ -252,9 +250,12 @@ def _sets_grid(
     dt: float,
     stop: float,
     offsets: np.ndarray,
-    footprints: np.ndarray,
-) -> Grid:
-    """The grid of several axles (or a footprint), by set operations with numpy."""
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The points every axle must step on, their gaps and the steps in each gap.
+
+    Raises ``ValueError`` for more than :data:`~vbi_lib.ranges.MAX_NODES` nodes, counted
+    before the grid is allocated.
+    """
     first = profile.start + float(offsets.max())
     supports = bridge_start + np.array(bridge.supports)
     shifted = (profile.x[None, :] + offsets[:, None]).ravel()
@@ -267,7 +268,29 @@ def _sets_grid(
     keep = np.concatenate(([True], gaps > 1e-12 * max(1.0, abs(stop))))
     points = points[keep]
     gaps = np.diff(points)
-    pieces = np.maximum(1, np.ceil(gaps / (speed * dt) - 1e-9)).astype(np.int64)
+    pieces = np.maximum(1.0, np.ceil(gaps / (speed * dt) - 1e-9))
+    nodes = float(pieces.sum()) + 1.0
+    if not nodes <= MAX_NODES:  # before anything the size of the crossing is allocated
+        raise ValueError(
+            f"dt={dt!r} s at speed={speed!r} m/s over {stop - first:.4g} m asks for {nodes:.3g} "
+            f"time steps; a crossing has at most {MAX_NODES:.0e} (about 3 GB): raise dt (or "
+            "leave it to the model, dt=None), raise the speed, or shorten the road"
+        )
+    return points, gaps, pieces.astype(np.int64)
+
+
+def _sets_grid(
+    bridge: Bridge,
+    profile: Profile,
+    speed: float,
+    bridge_start: float,
+    dt: float,
+    stop: float,
+    offsets: np.ndarray,
+    footprints: np.ndarray,
+) -> Grid:
+    """The grid of several axles (or a footprint), by set operations with numpy."""
+    points, gaps, pieces = _pieces(bridge, profile, speed, bridge_start, dt, stop, offsets)
     starts = np.repeat(points[:-1], pieces)
     widths = np.repeat(gaps / pieces, pieces)
     within = np.arange(pieces.sum()) - np.repeat(np.cumsum(pieces) - pieces, pieces)
@@ -311,18 +334,17 @@ def node_grid(
     Raises
     ------
     ValueError
-        When ``dt`` would give more than :data:`MAX_NODES` nodes.
+        More than :data:`~vbi_lib.ranges.MAX_NODES` nodes (counted before the grid is
+        allocated).
     """
     offsets = np.zeros(1) if vehicle is None else vehicle.offsets
     footprints = np.zeros(1) if vehicle is None else vehicle.footprint
-    length = stop - profile.start
-    if length / (speed * dt) > MAX_NODES:
-        raise ValueError(
-            f"dt={dt!r} s gives about {length / (speed * dt):.3g} steps over {length:g} m at "
-            f"{speed:g} m/s; use a step of at least {length / (speed * MAX_NODES):.3g} s"
-        )
     if offsets.size > 1 or footprints[0] != 0.0:
         return _sets_grid(bridge, profile, speed, bridge_start, dt, stop, offsets, footprints)
+    # the walker's allocation bound: samples, supports and ends, plus a step per speed * dt
+    bound = profile.x.size + len(bridge.supports) + 3 + (stop - profile.start) / (speed * dt)
+    if not bound <= MAX_NODES:  # near the limit: count the nodes exactly (refuses beyond)
+        _pieces(bridge, profile, speed, bridge_start, dt, stop, offsets)
     edges = np.array(bridge.supports)
     supports = bridge_start + edges
     supports = supports[(supports >= profile.start) & (supports <= stop)]

@@ -449,6 +449,7 @@ class OneCoordinate(CrossingModel):
 
     name = "one-coordinate"
     description = "the study's beam with one coordinate psi z_b (1 or 2 spans); RK4"
+    max_omega_dt = 2.0  # RK4 is stable below 2.8
     result_type = OneCoordinateCrossing
 
     lane_kernel = staticmethod(run_lanes)

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from .. import _validation as check
 from .. import display
 from ..bridges import Bridge
 from ..modes import BeamModes
@@ -42,10 +43,9 @@ def _spans(n: int) -> str:
 def _stations(x: object) -> np.ndarray:
     """Stations from the bridge start as a 1-D float array of at least one (range checked
     where the modes are evaluated)."""
-    try:
-        sections = np.atleast_1d(np.asarray(x, dtype=float)).ravel()
-    except (TypeError, ValueError):
-        raise ValueError(f"x={x!r} must be stations [m] from the bridge start") from None
+    if isinstance(x, str | bytes) or x is None:
+        raise TypeError(f"x={x!r} must be stations [m] from the bridge start (numbers)")
+    sections = np.atleast_1d(check.real_array("x", x)).ravel()
     if sections.size == 0:
         raise ValueError(f"x={x!r} must give one or more stations [m] from the bridge start")
     return sections

@@ -4,7 +4,8 @@ r"""Measuring amplification in the field: the public namespace of a few small mo
 measurement (chapter 11):
 
 * :mod:`~vbi_lib.monitoring.inertia`: why a displacement gauge reads more amplification than
-  a strain gauge (equations 19-31): ``DAF_d = A_v + 48 r / pi^4``, ``DAF_s = A_v + 4 r / pi^2``
+  a strain gauge (equations 19-31): ``DAF_d = A_v + 48 eta / pi^4``,
+  ``DAF_s = A_v + 4 eta / pi^2``
   for the first mode, :func:`displacement_daf`, :func:`strain_daf`,
   :func:`extra_amplification_ratio`;
 * :mod:`~vbi_lib.monitoring.records`: the DAF of recorded events in service

@@ -30,7 +30,7 @@ DEFAULT_FILTER_ORDER = 4
 
 
 def _record(name: str, values: object) -> np.ndarray:
-    array = np.asarray(values, dtype=float)
+    array = check.real_array(name, values)
     if array.ndim != 1:
         raise ValueError(f"{name} must be one-dimensional, got shape {array.shape}")
     bad = ~np.isfinite(array)
@@ -51,9 +51,8 @@ def _lowpass_sos(cutoff_hz: float, sample_rate_hz: float, order: int) -> np.ndar
             f"cutoff_hz={cutoff_hz!r} is at or above the Nyquist frequency {nyquist:g} Hz "
             f"of sample_rate_hz={sample_rate_hz!r}; choose a cut-off below {nyquist:g} Hz"
         )
-    if not (isinstance(order, int | np.integer) and 1 <= order <= 12):
-        raise ValueError(f"order={order!r} must be an integer from 1 to 12")
-    return _signal.butter(int(order), cutoff_hz, btype="low", fs=sample_rate_hz, output="sos")
+    order = check.integer("order", order, low=1, high=12)
+    return _signal.butter(order, cutoff_hz, btype="low", fs=sample_rate_hz, output="sos")
 
 
 def lowpass(
@@ -136,7 +135,7 @@ def estimate_first_frequency(
     """
     x = _record("signal", signal)
     fs = check.positive("sample_rate_hz", sample_rate_hz)
-    if not (0.0 < float(tail_fraction) <= 1.0):
+    if not (0.0 < check.number("tail_fraction", tail_fraction) <= 1.0):
         raise ValueError(f"tail_fraction={tail_fraction!r} must be in (0, 1]")
     n_tail = int(round(x.size * float(tail_fraction)))
     if n_tail < 64:

@@ -5,13 +5,15 @@ vibrates, the inertia of its own mass.  In mode :math:`n` that inertia is the di
 :math:`(m_b A_n / L) \sin(n \pi x / L)` (23)-(24) with :math:`m_b` the beam's mass and
 :math:`A_n` the modal acceleration amplitude.  Adding the two static solutions and dividing by
 the point-load solutions :math:`P L^3 / 48 EI` (19) and :math:`P L / 4` (21) gives, with
-:math:`r_n = m_b A_n / P`,
+the inertia ratio :math:`\eta_n = m_b A_n / P` (the book's symbol; the study wrote the
+ratio without naming it),
 
 .. math::
-    DAF_d = A_v + \sum_n \frac{48\, r_n \sin(n\pi/2)}{n^4 \pi^4}, \qquad
-    DAF_s = A_v + \sum_n \frac{4\, r_n \sin(n\pi/2)}{n^2 \pi^2}
+    DAF_d = A_v + \sum_n \frac{48\, \eta_n \sin(n\pi/2)}{n^4 \pi^4}, \qquad
+    DAF_s = A_v + \sum_n \frac{4\, \eta_n \sin(n\pi/2)}{n^2 \pi^2}
 
-(25)-(27) for the first mode, (29)-(30) in general.  The extra terms stand in the ratio
+(25)-(27) for the first mode, (29)-(30) in general (:eq:`study-25` to :eq:`study-27`,
+:eq:`study-29`, :eq:`study-30` in the book).  The extra terms stand in the ratio
 :math:`12 / (n^2 \pi^2)` (28), (31): 1.216 for the first mode, so a displacement gauge reads
 more amplification than a strain gauge whenever the first mode vibrates.
 
@@ -36,7 +38,7 @@ STRAIN_INERTIA_COEFFICIENT = 4.0 / math.pi**2
 
 
 def inertia_ratio(beam_mass: float, acceleration: float | np.ndarray, force: float) -> np.ndarray:
-    """``r = m_b A / P``: peak inertia force of the beam over the vehicle weight (25)-(27).
+    """``eta = m_b A / P``: peak inertia force of the beam over the vehicle weight (25)-(27).
 
     Parameters
     ----------
@@ -100,15 +102,15 @@ def displacement_daf(
 ) -> np.ndarray:
     """Midspan displacement amplification with the beam's own inertia (26), (29).
 
-    ``DAF_d = A_v + sum_n 48 r_n sin(n pi / 2) / (n^4 pi^4)``.
+    ``DAF_d = A_v + sum_n 48 eta_n sin(n pi / 2) / (n^4 pi^4)``.
 
     Parameters
     ----------
     vehicle_amplification
         ``A_v``: the vehicle's contact force over its weight [-].
     inertia_ratio
-        ``r_n = m_b A_n / P`` [-]; with ``modes`` a list, the last axis holds one ratio per
-        mode.
+        ``eta_n = m_b A_n / P`` [-]; with ``modes`` a list, the last axis holds one ratio
+        per mode.
     modes
         Mode number (default 1) or list of mode numbers; even modes add nothing at midspan.
 
@@ -128,7 +130,7 @@ def strain_daf(
 ) -> np.ndarray:
     """Midspan strain (stress, moment) amplification with the beam's own inertia (27), (30).
 
-    ``DAF_s = A_v + sum_n 4 r_n sin(n pi / 2) / (n^2 pi^2)``; arguments as for
+    ``DAF_s = A_v + sum_n 4 eta_n sin(n pi / 2) / (n^2 pi^2)``; arguments as for
     :func:`displacement_daf`.
 
     Examples
@@ -158,16 +160,19 @@ def extra_amplification_ratio(mode: int = 1) -> float:
 
 
 def plot_extra_amplification(max_ratio: float = 1.0, ax=None):  # noqa: ANN001, ANN201
-    """Figure 2.11.1: amplification added by the first mode's inertia against ``r``."""
+    """Figure 2.11.1: amplification added by the first mode's inertia against ``eta``.
+
+    ``ax``: a matplotlib axes, or None for a new figure (7 x 3.2 in).  Returns the axes.
+    """
     import matplotlib.pyplot as plt
 
     max_ratio = check.positive("max_ratio", max_ratio)
     if ax is None:
-        _, ax = plt.subplots(figsize=(6, 3.6))
-    r = np.linspace(0.0, max_ratio, 201)
-    ax.plot(r, displacement_daf(0.0, r), label=r"displacement, $48 r / \pi^4$")
-    ax.plot(r, strain_daf(0.0, r), label=r"strain, stress, moment, $4 r / \pi^2$")
-    ax.set_xlabel(r"bridge inertia over vehicle weight $r = m_b A_{max} / P$ [-]")
+        _, ax = plt.subplots(figsize=(7, 3.2))
+    eta = np.linspace(0.0, max_ratio, 201)
+    ax.plot(eta, displacement_daf(0.0, eta), label=r"displacement, $48 \eta / \pi^4$")
+    ax.plot(eta, strain_daf(0.0, eta), label=r"strain, stress, moment, $4 \eta / \pi^2$")
+    ax.set_xlabel(r"bridge inertia over vehicle weight $\eta = m_b A_{max} / P$ [-]")
     ax.set_ylabel("extra amplification [-]")
     ax.legend(loc="upper left")
     ax.grid(alpha=0.3)

@@ -406,8 +406,11 @@ def daf_from_record(
     (1.2, 6.0, 2.45)
     """
     fs = check.positive("sample_rate_hz", sample_rate_hz)
-    if not (0.0 <= float(baseline_fraction) < 0.5):
+    if not (0.0 <= check.number("baseline_fraction", baseline_fraction) < 0.5):
         raise ValueError(f"baseline_fraction={baseline_fraction!r} must be in [0, 0.5)")
+    if not (0.0 < check.number("tail_fraction", tail_fraction) <= 1.0):
+        raise ValueError(f"tail_fraction={tail_fraction!r} must be in (0, 1]")
+    check.integer("order", order, low=1, high=12)
     if span is not None:
         span = check.positive("span", span)
     method, reason, doubtful = _choose_method(method, response, span, crawl is not None)
@@ -450,11 +453,12 @@ def daf_from_record(
         plan["shape"] = crawl_shape(
             _checked("crawl", crawl), crawl_fs, plan["crawl_speed"], float(baseline_fraction)
         )
-    several = np.ndim(signal) == 2 or (
-        isinstance(signal, list | tuple)
-        and len(signal) > 0
-        and all(np.ndim(event) >= 1 for event in signal)
-    )
+    # a list of records of different lengths is several events (np.ndim of the whole list
+    # would try to make it one array and fail)
+    if isinstance(signal, list | tuple):
+        several = len(signal) > 0 and all(np.ndim(event) >= 1 for event in signal)
+    else:
+        several = np.ndim(signal) == 2
     events = list(signal) if several else [signal]
     n = len(events)
     if n == 0:

@@ -11,10 +11,13 @@ columns, the DAF of each span (88)-(91), the peak contact-force amplification
 contact force stayed compressive (the model's validity).
 
 The package is split by job: :mod:`~vbi_lib.studies.recipes` (roads a worker builds),
-:mod:`~vbi_lib.studies.scenarios` (tables: grids, Monte Carlo draws, validation),
-:mod:`~vbi_lib.studies.runner` (the runner and its executors), :mod:`~vbi_lib.studies.files`
+:mod:`~vbi_lib.studies.scenarios` (tables: grids, Monte Carlo draws),
+:mod:`~vbi_lib.studies.checks` (a table checked before any work),
+:mod:`~vbi_lib.studies.runner` (the runner and its executors), :mod:`~vbi_lib.studies.chunks`
+(what a worker runs), :mod:`~vbi_lib.studies.files`
 (saving results),
-:mod:`~vbi_lib.studies.statistics` (characteristic values, agreement with a reference) and
+:mod:`~vbi_lib.studies.statistics` (characteristic values, agreement with a reference, how
+many crossings lost contact) and
 :mod:`~vbi_lib.studies.envelopes` (responses at sections: their columns and envelopes,
 ``run(..., sections=[...])`` and :func:`envelope`).
 
@@ -55,7 +58,7 @@ from .scenarios import (
     parametric_trucks,
     validate,
 )
-from .statistics import agreement, characteristic_values
+from .statistics import agreement, characteristic_values, contact_summary
 
 __all__ = [
     "DEFAULT_CHUNK_SIZE",
@@ -68,6 +71,7 @@ __all__ = [
     "ISOProfile",
     "agreement",
     "characteristic_values",
+    "contact_summary",
     "default_executor",
     "envelope",
     "grid",

@@ -4,17 +4,31 @@ A study may name a road by a recipe instead of a :class:`~vbi_lib.Profile`: the 
 cheap to send to a worker process, and the worker builds each road once
 (``functools.lru_cache``) however many crossings use it.  A recipe has ``start``, ``end``,
 ``label`` and ``build()``.
+
+A recipe checks its parameters when it is made, with the same checks as the
+:class:`~vbi_lib.Profile` generator it names (types, ranges of validity, the number of
+samples), without building the road: a recipe that exists can be built, so a study never
+fails in a worker on a road it could have refused up front.
 """
 
 from __future__ import annotations
 
 import functools
+import warnings
 from dataclasses import dataclass
 from typing import Any
 
-import numpy as np
-
-from ..profiles import Profile
+from ..profiles import (
+    Profile,
+    check_harmonic,
+    check_iso_rms,
+    check_seed,
+    check_stations,
+    iso_band,
+    iso_level,
+)
+from ..ranges import check_range
+from ..validity import OutsideValidityWarning
 
 __all__ = ["FlatProfile", "HarmonicProfile", "ISOProfile", "extent", "is_recipe", "profile_label"]
 
@@ -30,6 +44,9 @@ class FlatProfile:
     length: float
     spacing: float
     start: float = 0.0
+
+    def __post_init__(self) -> None:
+        check_stations(self.length, self.spacing, self.start)
 
     @property
     def end(self) -> float:
@@ -64,6 +81,10 @@ class HarmonicProfile:
     phase: float = 0.0
     start: float = 0.0
 
+    def __post_init__(self) -> None:
+        check_harmonic(self.length, self.spacing, self.wavelength, self.amplitude, self.phase,
+                       self.start)  # fmt: skip
+
     @property
     def end(self) -> float:
         """Last station [m]."""
@@ -88,8 +109,11 @@ class HarmonicProfile:
 class ISOProfile:
     """Recipe for an ISO 8608 random road, ``Profile.iso8608(...)`` built in the worker (87).
 
+    The book writes the spectrum as :eq:`study-87`.
     Give either ``c10`` (``G_d(n0)`` at ``n0 = 0.1`` cycle/m [m^3]) or ``iso_class`` (A-H).
-    ``seed`` fixes the random phases, so the same recipe always builds the same road.
+    ``seed`` (a whole number >= 0) fixes the random phases, so the same recipe always builds
+    the same road.  Checked as :meth:`vbi_lib.Profile.iso8608` checks (``TypeError``,
+    ``ValueError``), when the recipe is made.
 
     Examples
     --------
@@ -107,17 +131,17 @@ class ISOProfile:
     start: float = 0.0
 
     def __post_init__(self) -> None:
-        if (self.c10 is None) == (self.iso_class is None):
-            raise ValueError(
-                f"ISOProfile needs exactly one of c10 and iso_class; got c10={self.c10!r}, "
-                f"iso_class={self.iso_class!r}"
+        if self.seed is None:
+            raise TypeError(
+                "ISOProfile seed=None: give a whole number (a study must be repeatable)"
             )
-        if not isinstance(self.seed, int | np.integer) or isinstance(self.seed, bool):
-            raise ValueError(
-                f"ISOProfile seed={self.seed!r} must be an integer (a study must be repeatable)"
-            )
-        object.__setattr__(self, "seed", int(self.seed))
-        object.__setattr__(self, "band", tuple(float(b) for b in self.band))
+        object.__setattr__(self, "seed", check_seed(self.seed))
+        level = iso_level(self.c10, self.iso_class)
+        waviness = check_range("waviness", self.waviness)
+        check_stations(self.length, self.spacing, self.start)
+        low, high = iso_band(self.band, float(self.spacing))
+        check_iso_rms(level, waviness, max(low, 1.0 / float(self.length)), high)
+        object.__setattr__(self, "band", (low, high))
 
     @property
     def end(self) -> float:
@@ -154,7 +178,10 @@ _RECIPES = (FlatProfile, HarmonicProfile, ISOProfile)
 
 @functools.lru_cache(maxsize=64)
 def _build(recipe: Any) -> Profile:
-    return recipe._make()
+    with warnings.catch_warnings():
+        # the recipe warned when it was made; its road is the same
+        warnings.simplefilter("ignore", OutsideValidityWarning)
+        return recipe._make()
 
 
 def is_recipe(value: object) -> bool:

@@ -23,177 +23,18 @@ import numpy as np
 import pandas as pd
 
 from .. import _validation as check
-from ..bridges import Bridge
 from ..profiles import Profile
-from ..validity import ContactLossWarning
+from ..validity import ContactLossWarning, FailedRowsWarning
 from ..vehicles import Vehicle, as_system
-from .envelopes import SECTION_FIELDS, check_sections, section_columns
+from .checks import TAG_PREFIX, _rows, validate
+from .chunks import SUMMARIES, failure, init_worker, run_chunk
+from .envelopes import SECTION_FIELDS, check_sections
 from .recipes import extent, profile_label
-from .scenarios import TAG_PREFIX, _rows, validate
 
 #: Default number of crossings per chunk handed to a worker.
 DEFAULT_CHUNK_SIZE = 250
 #: Studies with fewer crossings than this run in this process by default.
 SERIAL_BELOW = 1500
-
-
-# ---------------------------------------------------------------------------- workers
-def _set_threads(threads: int | None) -> None:
-    if threads:
-        import numba
-
-        numba.set_num_threads(max(1, min(int(threads), numba.config.NUMBA_NUM_THREADS)))
-
-
-def _init_worker() -> None:
-    """Process-pool initializer: one numba thread per worker; Ctrl-C is the parent's."""
-    import signal
-
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    _set_threads(1)
-
-
-def _road(profile: Profile, offset: float) -> Profile:
-    """The road slid back by ``offset``: at station ``x`` it has the profile's ``x + offset``.
-
-    ``profile.segment(start + offset, end).shifted(-offset)``, number for number, with one
-    copy of the samples instead of two and one interpolation instead of one per sample
-    (a Monte Carlo study makes one road per crossing).
-    """
-    if offset == 0.0:
-        return profile
-    x, elevation = profile.x, profile.elevation
-    cut = x[0] + offset
-    if not x[0] <= cut < x[-1]:
-        profile.segment(cut, x[-1])  # raises with the message naming the stations
-    first = np.searchsorted(x, cut, side="right")  # the samples after the cut
-    stations = np.empty(x.size - first + 1)
-    stations[0] = cut
-    stations[1:] = x[first:]
-    heights = np.empty(stations.size)
-    heights[0] = np.interp(cut, x, elevation)
-    heights[1:] = elevation[first:]
-    return Profile(stations + -offset, heights, name=profile.name)
-
-
-def _iri_of_spans(road: Profile, bridge: Bridge, start: float, width: int) -> np.ndarray:
-    """IRI [m/km] of the road over each span (the golden car starts on the bridge).
-
-    Equal spans: one run over the deck in segments of a span; unequal spans: one run per
-    span (the car starts afresh on each).
-    """
-    from ..roughness import iri  # imported only when a study asks for IRI
-
-    out = np.full(width, np.nan)
-    if bridge.equal_spans:
-        deck = road.segment(start, start + bridge.length)
-        values = iri(deck, segment_length=bridge.span).segment_iri
-        out[: bridge.n_spans] = np.asarray(values, dtype=float)[: bridge.n_spans]
-    else:
-        supports = start + np.array(bridge.supports)
-        for j in range(bridge.n_spans):
-            out[j] = iri(road.segment(supports[j], supports[j + 1])).iri
-    return out
-
-
-_SUMMARIES = (
-    "contact_force_amplification",
-    "peak_contact_position",
-    "min_contact_force_ratio",
-    "tension_fraction",
-    "flight_fraction",
-    "dt",
-)
-
-
-def _run_sections(payload: dict[str, Any], road: list[Profile], out: dict[str, Any]) -> None:
-    """Crossings one at a time with their histories, for the responses at the sections."""
-    from ..models import simulate
-
-    sections = payload["sections"]
-    for i in range(payload["speed"].size):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", ContactLossWarning)
-            crossing = simulate(
-                payload["bridges"][payload["b"][i]],
-                payload["vehicles"][payload["v"][i]],
-                road[i],
-                payload["speed"][i],
-                payload["start"][i],
-                model=payload["model"][i],
-                modes=int(payload["modes"][i]) if payload["model"][i] == "modal" else None,
-                coupled=bool(payload["coupled"][i]),
-                convective=bool(payload["convective"][i]),
-                dt=payload["dt"],
-            )
-        out["daf"][i, : crossing.daf.size] = crossing.daf
-        out["contact_force_amplification"][i] = crossing.contact_force_amplification
-        on = np.flatnonzero(crossing.on_bridge)
-        peak = on[np.argmax(crossing.contact_force[on])]
-        out["peak_contact_position"][i] = crossing.position[peak]
-        out["min_contact_force_ratio"][i] = crossing.min_contact_force_ratio
-        out["tension_fraction"][i] = crossing.tension_fraction
-        out["dt"][i] = crossing.dt
-        for name, values in section_columns(crossing.sections(sections)).items():
-            out[name][i] = values
-
-
-def _run_chunk(payload: dict[str, Any]) -> dict[str, np.ndarray]:
-    """Simulate one chunk of scenarios (runs inside a worker; keeps no time histories)."""
-    from ..models import simulate_many
-
-    _set_threads(payload["threads"])
-    profiles = [p if isinstance(p, Profile) else p.build() for p in payload["profiles"]]
-    bridges, vehicles = payload["bridges"], payload["vehicles"]
-    b, v, p = payload["b"], payload["v"], payload["p"]
-    speed, start, offset = payload["speed"], payload["start"], payload["offset"]
-    coupled, convective = payload["coupled"], payload["convective"]
-    model, modes = payload["model"], payload["modes"]
-    n = speed.size
-    roads: dict[tuple[int, float], Profile] = {}
-    for i in range(n):
-        key = (int(p[i]), float(offset[i]))
-        if key not in roads:
-            roads[key] = _road(profiles[key[0]], key[1])
-    road = [roads[(int(p[i]), float(offset[i]))] for i in range(n)]
-    out = {"daf": np.full((n, payload["width"]), np.nan)}
-    out |= {name: np.full(n, np.nan) for name in _SUMMARIES}
-    if payload["sections"] is not None:
-        count = payload["sections"].size
-        out |= {name: np.full((n, count), np.nan) for name in SECTION_FIELDS}
-        _run_sections(payload, road, out)
-        names: dict = {}  # every crossing is done
-    else:
-        names = dict.fromkeys(model)
-    for name in names:
-        rows = np.flatnonzero(model == name)
-        with warnings.catch_warnings():
-            # the table's columns say which crossings lost contact; run() warns once
-            warnings.simplefilter("ignore", ContactLossWarning)
-            result = simulate_many(
-                [bridges[b[i]] for i in rows],
-                [vehicles[v[i]] for i in rows],
-                [road[i] for i in rows],
-                speed[rows],
-                start[rows],
-                model=name,
-                modes=[int(m) for m in modes[rows]] if name == "modal" else None,
-                coupled=list(coupled[rows]),
-                convective=list(convective[rows]),
-                dt=payload["dt"],
-            )
-        out["daf"][rows, : result.daf.shape[1]] = result.daf
-        for column in _SUMMARIES:
-            out[column][rows] = getattr(result, column)
-    if payload["iri"]:
-        out["iri"] = np.empty((n, payload["width"]))
-        done: dict[tuple[int, int, float], np.ndarray] = {}
-        for i in range(n):
-            key = (id(road[i]), int(b[i]), float(start[i]))
-            if key not in done:
-                done[key] = _iri_of_spans(road[i], bridges[b[i]], start[i], payload["width"])
-            out["iri"][i] = done[key]
-    return out
 
 
 # ---------------------------------------------------------------------------- running
@@ -218,7 +59,7 @@ def default_executor(max_workers: int | None = None) -> cf.ProcessPoolExecutor:
         _POOL = cf.ProcessPoolExecutor(
             max_workers=workers,
             mp_context=multiprocessing.get_context("spawn"),
-            initializer=_init_worker,
+            initializer=init_worker,
         )
     return _POOL
 
@@ -350,7 +191,23 @@ def run(
         ``flight_fraction`` (a tyre off the road, modelled), ``outside_validity`` (a
         bilateral contact became tensile: outside the model's validity; one
         ``ContactLossWarning`` says how many did) and ``lost_contact`` (either);
-        ``dt`` [s] and, on request, ``iri_1``, ``iri_2``.
+        ``dt`` [s] and, on request, ``iri_1``, ``iri_2``.  When a row fails (its crossing
+        cannot be run: too many time steps, say), its results are NaN, the other rows are
+        kept, and an ``error`` column (present only then) gives the reason of each failed
+        row (``None`` for the others).
+
+    Raises
+    ------
+    TypeError, ValueError
+        A table that :func:`~vbi_lib.studies.checks.validate` refuses (naming the rows),
+        or a bad executor, chunk size or ``dt``; nothing has run.
+
+    Warns
+    -----
+    ContactLossWarning
+        Once, with how many crossings lost contact.
+    FailedRowsWarning
+        Once, naming the rows that failed and the first reason.
 
     Examples
     --------
@@ -425,7 +282,8 @@ def run(
         }
 
     daf = np.full((n, width), np.nan)
-    summaries = {name: np.full(n, np.nan) for name in _SUMMARIES}
+    errors = np.full(n, None, dtype=object)
+    summaries = {name: np.full(n, np.nan) for name in SUMMARIES}
     iri_values = np.full((n, width), np.nan)
     per_section = {
         name: np.full((n, 0 if sections is None else sections.size), np.nan)
@@ -450,7 +308,7 @@ def run(
     try:
         while True:
             for rows in pending:
-                in_flight[pool.submit(_run_chunk, payload(rows))] = rows
+                in_flight[pool.submit(run_chunk, payload(rows))] = rows
                 if len(in_flight) >= limit:
                     break
             if not in_flight:
@@ -462,13 +320,13 @@ def run(
                     result = future.result()
                 except BrokenProcessPool:
                     raise
-                except Exception as exc:
-                    raise RuntimeError(
-                        f"crossings in {_rows(np.isin(np.arange(n), rows), table.index)} "
-                        f"failed: {exc}"
-                    ) from exc
+                except Exception as exc:  # noqa: BLE001 - the chunk's rows failed, not the run
+                    errors[rows] = failure(exc)
+                    bar.update(rows.size)
+                    continue
+                errors[rows] = result["error"]
                 daf[rows] = result["daf"]
-                for name in _SUMMARIES:
+                for name in SUMMARIES:
                     summaries[name][rows] = result[name]
                 if sections is not None:
                     for name in SECTION_FIELDS:
@@ -568,4 +426,15 @@ def run(
             out[f"section_{k + 1}"] = np.full(n, station)
             for name in SECTION_FIELDS:
                 out[f"{name}_{k + 1}"] = per_section[name][:, k]
+    failed = errors != None  # noqa: E711
+    if failed.any():
+        out["error"] = errors
+        first = int(np.flatnonzero(failed)[0])
+        warnings.warn(
+            f"{int(failed.sum())} of {n} crossings failed and have no results (column error; "
+            f"the others are kept): {_rows(failed, table.index, limit=20)}; row "
+            f"{table.index[first]!r}: {errors[first]}",
+            FailedRowsWarning,
+            stacklevel=2,
+        )
     return pd.DataFrame(out, index=table.index.copy())

@@ -1,15 +1,16 @@
 """Scenario tables: one row per crossing, built as a full factorial or drawn at random.
 
-:func:`grid` crosses axes (bridges x trucks x roads x speeds x ...), :func:`monte_carlo` draws
-every random number of a study up front from one seed, and :func:`validate` checks a whole
-table before any work, naming the bad rows.  :func:`parametric_bridges` and
+:func:`grid` crosses axes (bridges x trucks x roads x speeds x ...) and :func:`monte_carlo` draws
+every random number of a study up front from one seed;
+:func:`~vbi_lib.studies.checks.validate` checks a whole table before any work, naming the
+bad rows.  :func:`parametric_bridges` and
 :func:`parametric_trucks` build the study's parametric sets (Tables 2.15.3 and 2.15.4).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -17,26 +18,23 @@ import pandas as pd
 
 from .. import _validation as check
 from ..bridges import Bridge
-from ..models import MODELS
-from ..profiles import Profile
+from ..profiles import check_seed
+from ..ranges import check_range
 from ..units import ft, slinch
-from ..vehicles import Vehicle, as_system
-from .recipes import ISOProfile, extent, is_recipe
+from ..vehicles import Vehicle
+from .checks import OPTIONAL_COLUMNS, REQUIRED_COLUMNS, TAG_PREFIX, _is_vehicle, validate
+from .recipes import ISOProfile
 
-#: Columns a scenario table may have; the first five are required.
-REQUIRED_COLUMNS = ("bridge", "vehicle", "profile", "speed", "bridge_start")
-OPTIONAL_COLUMNS = {
-    "profile_offset": 0.0,
-    "coupled": True,
-    "convective": True,
-    "model": "one-coordinate",
-    "modes": None,
-    "bridge_name": None,
-    "vehicle_name": None,
-    "profile_name": None,
-}
-#: Columns starting with this prefix are carried through :func:`run` unchanged.
-TAG_PREFIX = "tag_"
+__all__ = [
+    "OPTIONAL_COLUMNS",
+    "REQUIRED_COLUMNS",
+    "TAG_PREFIX",
+    "grid",
+    "monte_carlo",
+    "parametric_bridges",
+    "parametric_trucks",
+    "validate",
+]
 
 # grid() keyword -> scenario column (plural and singular spellings)
 _GRID_AXES = {
@@ -224,185 +222,6 @@ def grid(
     return frame
 
 
-# ---------------------------------------------------------------------------- validation
-def _rows(mask: np.ndarray, index: pd.Index, limit: int = 8) -> str:
-    bad = list(index[np.asarray(mask, dtype=bool)])
-    shown = ", ".join(repr(r) for r in bad[:limit])
-    more = f" and {len(bad) - limit} more" if len(bad) > limit else ""
-    return f"row{'s' if len(bad) > 1 else ''} {shown}{more}"
-
-
-def _as_table(scenarios: Any) -> pd.DataFrame:
-    if isinstance(scenarios, pd.DataFrame):
-        return scenarios
-    if isinstance(scenarios, Iterable) and not isinstance(scenarios, str | bytes | Mapping):
-        rows = list(scenarios)
-        if rows and all(isinstance(r, Mapping) for r in rows):
-            return pd.DataFrame(rows)
-        if not rows:
-            return pd.DataFrame()
-    raise TypeError(
-        "scenarios must be a pandas.DataFrame (see vbi.studies.grid) or a list of dicts, got "
-        f"{type(scenarios).__name__}"
-    )
-
-
-def validate(scenarios: Any) -> pd.DataFrame:
-    """Check a scenario table before any work and return it with defaults filled in.
-
-    Raises ``ValueError`` for an empty table, unknown or missing columns, and rows with bad
-    values or a profile that does not cover the approach and the bridge (naming the rows).
-    ``modes`` must be a whole number >= 1 on ``model="modal"`` rows and empty on others.
-
-    Examples
-    --------
-    >>> import vbi_lib as vbi
-    >>> from vbi_lib.studies import FlatProfile
-    >>> bad = grid(vbi.Bridge(30.0, 1, 2e10, 8000.0), vbi.Vehicle.from_frequency(3e4, 3.0),
-    ...            FlatProfile(120.0, 0.05), 20.0, [80.0, 100.0])
-    >>> validate(bad)  # doctest: +ELLIPSIS
-    Traceback (most recent call last):
-    ...
-    ValueError: scenario table: row 1: the profile (stations 0 to 120 m) does not cover ...
-    """
-    table = _as_table(scenarios)
-    if len(table) == 0:
-        raise ValueError("the study is empty: the scenario table has no rows")
-    columns = [str(c) for c in table.columns]
-    known = set(REQUIRED_COLUMNS) | set(OPTIONAL_COLUMNS)
-    unknown = [c for c in columns if c not in known and not c.startswith(TAG_PREFIX)]
-    if unknown:
-        raise ValueError(
-            f"scenario table has unknown columns {unknown}; allowed are "
-            f"{list(REQUIRED_COLUMNS) + list(OPTIONAL_COLUMNS)} and any '{TAG_PREFIX}*' column"
-        )
-    missing = [c for c in REQUIRED_COLUMNS if c not in columns]
-    if missing:
-        raise ValueError(f"scenario table lacks the required columns {missing}")
-    if table.index.has_duplicates:
-        raise ValueError("scenario table has a duplicated index; call .reset_index(drop=True)")
-    table = table.copy()
-    for column, default in OPTIONAL_COLUMNS.items():
-        if column not in table.columns and default is not None:
-            table[column] = default
-    if "modes" not in table.columns:
-        table["modes"] = None
-    index = table.index
-    problems: list[str] = []
-
-    def numbers(column: str) -> np.ndarray:
-        out = np.full(len(table), np.nan)
-        for i, v in enumerate(table[column].to_numpy()):
-            if isinstance(v, bool | np.bool_):
-                continue
-            try:
-                out[i] = float(v)
-            except (TypeError, ValueError):
-                pass
-        return out
-
-    ok = np.ones(len(table), dtype=bool)
-    wrong = np.array([not isinstance(v, Bridge) for v in table["bridge"]])
-    if wrong.any():
-        problems.append(f"{_rows(wrong, index)}: bridge is not a vbi.Bridge")
-        ok &= ~wrong
-    wrong = np.array([not _is_vehicle(v) for v in table["vehicle"]])
-    if wrong.any():
-        problems.append(
-            f"{_rows(wrong, index)}: vehicle is not a vbi.Vehicle nor another vehicle of "
-            "vbi.vehicles (QuarterCar, IndependentAxles, RigidTruck, Convoy, VehicleSystem)"
-        )
-        ok &= ~wrong
-    wrong = np.array([not (isinstance(p, Profile) or is_recipe(p)) for p in table["profile"]])
-    if wrong.any():
-        problems.append(
-            f"{_rows(wrong, index)}: profile is neither a vbi.Profile nor a recipe "
-            "(ISOProfile, HarmonicProfile, FlatProfile)"
-        )
-        ok &= ~wrong
-    speed = numbers("speed")
-    bad = ~(np.isfinite(speed) & (speed > 0))
-    if bad.any():
-        problems.append(f"{_rows(bad, index)}: speed must be a finite number > 0 [m/s]")
-        ok &= ~bad
-    start = numbers("bridge_start")
-    bad = ~np.isfinite(start)
-    if bad.any():
-        problems.append(f"{_rows(bad, index)}: bridge_start must be a finite station [m]")
-        ok &= ~bad
-    offset = numbers("profile_offset")
-    bad = ~(np.isfinite(offset) & (offset >= 0))
-    if bad.any():
-        problems.append(f"{_rows(bad, index)}: profile_offset must be a finite number >= 0 [m]")
-        ok &= ~bad
-    for column in ("coupled", "convective"):
-        bad = np.array([not isinstance(v, bool | np.bool_) for v in table[column]])
-        if bad.any():
-            problems.append(f"{_rows(bad, index)}: {column} must be True or False")
-            ok &= ~bad
-    model = table["model"].to_numpy(dtype=object)
-    bad = np.array([not (isinstance(m, str) and m in MODELS) for m in model])
-    if bad.any():
-        problems.append(f"{_rows(bad, index)}: model must be one of {sorted(MODELS)}")
-        ok &= ~bad
-    modes = table["modes"].to_numpy(dtype=object)
-    modal = model == "modal"
-    whole = np.array(
-        [isinstance(m, int | np.integer) and not isinstance(m, bool) and m >= 1 for m in modes]
-    )
-    bad = modal & ~whole
-    if bad.any():
-        problems.append(f"{_rows(bad, index)}: modes must be a whole number >= 1 for 'modal'")
-        ok &= ~bad
-    bad = ~modal & ~pd.isna(modes).astype(bool)
-    if bad.any():
-        problems.append(f"{_rows(bad, index)}: modes applies to model='modal' only; leave it empty")
-        ok &= ~bad
-    if ok.any():
-        rows = np.flatnonzero(ok)
-        b_code, b_unique = pd.factorize(table["bridge"].iloc[rows])
-        p_code, p_unique = pd.factorize(table["profile"].iloc[rows])
-        v_code, v_unique = pd.factorize(table["vehicle"].iloc[rows])
-        lengths = np.array([b.length for b in b_unique])[b_code]
-        wheelbase = np.array([as_system(v).wheelbase for v in v_unique])[v_code]
-        extents = np.array([extent(p) for p in p_unique]).reshape(-1, 2)[p_code]
-        road_end = extents[:, 1] - offset[rows]
-        end = start[rows] + lengths + wheelbase
-        short = (start[rows] - wheelbase < extents[:, 0] - 1e-9 * np.maximum(1, abs(end))) | (
-            end > road_end + 1e-9 * np.maximum(1, abs(end))
-        )
-        if short.any():
-            first = rows[np.flatnonzero(short)[0]]
-            k = np.flatnonzero(short)[0]
-            mask = np.zeros(len(table), dtype=bool)
-            mask[rows[short]] = True
-            problems.append(
-                f"{_rows(mask, index)}: the profile (stations {extents[k, 0]:g} to "
-                f"{extents[k, 1]:g} m) does not cover the approach and the bridge (to station "
-                f"{end[k]:g} m with bridge_start={start[first]:g} m, "
-                f"profile_offset={offset[first]:g} m, vehicle wheelbase {wheelbase[k]:g} m)"
-            )
-    if problems:
-        raise ValueError("scenario table: " + "; ".join(problems))
-    table["speed"] = speed
-    table["bridge_start"] = start
-    table["profile_offset"] = offset
-    table["coupled"] = table["coupled"].astype(bool)
-    table["convective"] = table["convective"].astype(bool)
-    table["modes"] = pd.array(
-        [int(m) if w else pd.NA for m, w in zip(modes, modal & whole, strict=True)], dtype="Int64"
-    )
-    return table
-
-
-def _is_vehicle(value: object) -> bool:
-    try:
-        as_system(value)
-    except TypeError:
-        return False
-    return True
-
-
 # ---------------------------------------------------------------------------- Monte Carlo
 def _population(name: str, values: Any, kind: type) -> tuple[list[Any], list[str] | None]:
     items, labels = _axis(name, values)
@@ -415,10 +234,17 @@ def _population(name: str, values: Any, kind: type) -> tuple[list[Any], list[str
     return items, labels
 
 
-def _range(name: str, value: Any, positive: bool = True) -> tuple[float, float]:
+def _range(name: str, value: Any, key: str | None = None) -> tuple[float, float]:
+    """``(low, high)`` from one value or a pair, each within ``RANGES[key]`` (else >= 0)."""
+    if isinstance(value, str | bytes) or (
+        not np.isscalar(value) and (not hasattr(value, "__len__") or len(value) != 2)
+    ):
+        raise TypeError(f"{name}={value!r} must be one number or a pair (low, high)")
     low, high = (value, value) if np.isscalar(value) else tuple(value)
-    low = check.positive(name, low) if positive else check.non_negative(name, low)
-    high = check.positive(name, high) if positive else check.non_negative(name, high)
+    if key is None:
+        low, high = check.non_negative(f"{name}[0]", low), check.non_negative(f"{name}[1]", high)
+    else:
+        low, high = check_range(key, low, f"{name}[0]"), check_range(key, high, f"{name}[1]")
     if high < low:
         raise ValueError(f"{name}={value!r}: give (low, high) with low <= high")
     return low, high
@@ -488,22 +314,19 @@ def monte_carlo(
     >>> len(s), bool(s["speed"].between(15.0, 30.0).all())
     (4, True)
     """
-    if not isinstance(n, int | np.integer) or isinstance(n, bool) or n < 1:
-        raise ValueError(f"n={n!r} must be a positive integer (the number of crossings)")
-    n = int(n)
+    n = check.integer("n", n, low=1, high=10_000_000)
     bridge_items, bridge_labels = _population("bridges", bridges, Bridge)
     vehicle_items, vehicle_labels = _population("vehicles", vehicles, Vehicle)
     if (c10_range is None) == (iso_classes is None):
         raise ValueError("give exactly one of c10_range=(low, high) [m^3] and iso_classes")
-    speed_low, speed_high = _range("speed_range", speed_range)
-    w_low, w_high = _range("waviness", waviness)
-    off_low, off_high = _range("offset_range", offset_range, positive=False)
-    approach = check.positive("approach", approach)
-    spacing = check.positive("spacing", spacing)
-    n_profiles = n if n_profiles is None else n_profiles
-    if not isinstance(n_profiles, int | np.integer) or n_profiles < 1:
-        raise ValueError(f"n_profiles={n_profiles!r} must be a positive integer")
-    rng = np.random.default_rng(seed)
+    speed_low, speed_high = _range("speed_range", speed_range, "speed")
+    w_low, w_high = _range("waviness", waviness, "waviness")
+    off_low, off_high = _range("offset_range", offset_range)
+    approach = check_range("profile_length", approach, "approach")
+    spacing = check_range("spacing", spacing)
+    n_profiles = n if n_profiles is None else check.integer("n_profiles", n_profiles, low=1)
+    coupled = check.flag("coupled", coupled)
+    rng = np.random.default_rng(check_seed(seed))
     length = approach + max(b.length for b in bridge_items) + off_high + spacing
     seeds = rng.integers(0, 2**31 - 1, size=n_profiles)
     w = (
@@ -512,14 +335,16 @@ def monte_carlo(
         else np.full(n_profiles, w_low)
     )
     if c10_range is not None:
-        c_low, c_high = _range("c10_range", c10_range)
+        c_low, c_high = _range("c10_range", c10_range, "c10")
         c10 = np.exp(rng.uniform(math.log(c_low), math.log(c_high), size=n_profiles))
         roads = [
             ISOProfile(length, spacing, c10=float(c), waviness=float(x), seed=int(k))
             for c, x, k in zip(c10, w, seeds, strict=True)
         ]
     else:
-        classes = [str(c).strip().upper() for c in iso_classes]
+        if isinstance(iso_classes, str) or not all(isinstance(c, str) for c in iso_classes):
+            raise TypeError(f"iso_classes={iso_classes!r} must be a list of letters 'A' to 'H'")
+        classes = [c.strip().upper() for c in iso_classes]
         if not classes or any(c not in "ABCDEFGH" or len(c) != 1 for c in classes):
             raise ValueError(f"iso_classes={iso_classes!r} must be letters 'A' to 'H'")
         picked = rng.integers(0, len(classes), size=n_profiles)

@@ -1,4 +1,5 @@
-"""Statistics of study results: characteristic values and agreement with a reference."""
+"""Statistics of study results: characteristic values, agreement with a reference, and how
+many crossings left the model's validity."""
 
 from __future__ import annotations
 
@@ -116,3 +117,101 @@ def agreement(predicted: object, reference: object) -> dict[str, float]:
         "mape": float(np.abs(error).mean()),
         "max_ape": float(np.abs(error).max()),
     }
+
+
+#: Columns of a results table that :func:`contact_summary` reads.
+CONTACT_COLUMNS = ("daf", "lost_contact", "min_contact_force_ratio")
+
+
+def contact_summary(results: pd.DataFrame, by: Any = None, daf_above: float = 2.0) -> pd.DataFrame:
+    """How many crossings of a study lost contact, and which large DAFs they explain.
+
+    A crossing whose contact force became tensile (``lost_contact``) is outside the
+    one-coordinate and modal models' validity: the sprung mass is tied to the road, so its
+    DAF is not a prediction of a real truck's.  This counts them, and the crossings whose
+    DAF exceeds ``daf_above``, per group of a :func:`run` table.
+
+    Parameters
+    ----------
+    results
+        A table from :func:`run` (columns ``daf``, ``lost_contact``,
+        ``min_contact_force_ratio``).
+    by
+        A column name, or a list of them, to group by; ``None``: one row ``"all"``.
+    daf_above
+        The DAF above which crossings are counted (default 2).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per group, columns: ``crossings``; ``lost contact`` (how many) and
+        ``lost contact [%]``; ``smallest contact force / weight [-]``; ``largest DAF [-]``;
+        ``largest DAF in contact [-]`` (NaN when every crossing lost contact);
+        ``DAF > x`` (how many) and ``DAF > x, lost contact`` (how many of those lost
+        contact), ``x`` being ``daf_above``.
+
+    Raises
+    ------
+    ValueError
+        A column missing, NaN among the DAFs or contact ratios, or ``daf_above`` not a
+        positive number.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> t = pd.DataFrame({"daf": [1.2, 2.5, 3.1], "lost_contact": [False, False, True],
+    ...                   "min_contact_force_ratio": [0.6, 0.1, -0.4]})
+    >>> s = contact_summary(t).loc["all"]
+    >>> int(s["lost contact"]), int(s["DAF > 2"]), float(s["largest DAF in contact [-]"])
+    (1, 2, 2.5)
+    """
+    if not isinstance(results, pd.DataFrame):
+        raise TypeError(f"results must be a pandas.DataFrame from run(), got {type(results)}")
+    missing = [c for c in CONTACT_COLUMNS if c not in results.columns]
+    if missing:
+        raise ValueError(
+            f"results lacks the column(s) {missing}; give a table from vbi_lib.studies.run"
+        )
+    daf_above = check.positive("daf_above", daf_above)
+    numbers = results[["daf", "min_contact_force_ratio"]].to_numpy(float)
+    if not np.isfinite(numbers).all():
+        raise ValueError(
+            "results hold NaN DAFs or contact ratios; drop failed or missing crossings first"
+        )
+    table = pd.DataFrame(
+        {
+            "daf": results["daf"].to_numpy(float),
+            "lost": results["lost_contact"].to_numpy(bool),
+            "ratio": results["min_contact_force_ratio"].to_numpy(float),
+        },
+        index=results.index,
+    )
+    if by is None:
+        keys: Any = pd.Series("all", index=table.index)
+    else:
+        keys = [results[c] for c in np.atleast_1d(by)]
+    above = f"DAF > {daf_above:g}"
+    rows = {}
+    for key, part in table.groupby(keys, sort=False):
+        large = part["daf"] > daf_above
+        kept = part.loc[~part["lost"], "daf"]
+        rows[key[0] if isinstance(key, tuple) and len(key) == 1 else key] = {
+            "crossings": len(part),
+            "lost contact": int(part["lost"].sum()),
+            "lost contact [%]": 100.0 * part["lost"].mean(),
+            "smallest contact force / weight [-]": part["ratio"].min(),
+            "largest DAF [-]": part["daf"].max(),
+            "largest DAF in contact [-]": kept.max() if len(kept) else np.nan,
+            above: int(large.sum()),
+            f"{above}, lost contact": int((large & part["lost"]).sum()),
+        }
+    out = pd.DataFrame.from_dict(rows, orient="index")
+    counts = ["crossings", "lost contact", above, f"{above}, lost contact"]
+    out = out.astype(dict.fromkeys(counts, "int64"))
+    if by is not None:
+        names = list(np.atleast_1d(by))
+        if len(names) > 1:
+            out.index = pd.MultiIndex.from_tuples(out.index, names=names)
+        else:
+            out.index.name = names[0]
+    return out

@@ -8,6 +8,7 @@ from functools import cached_property
 from typing import Literal
 
 from .. import _validation as check
+from ..ranges import check_range
 from ..units import ft, g, kip
 from .footprint import DEFAULT_FOOTPRINT
 from .system import VehicleSystem, as_system, stack
@@ -51,10 +52,11 @@ class Convoy:
         if len(vehicles) < 1:
             raise ValueError(f"vehicles={self.vehicles!r} must be a list of one or more vehicles")
         systems = [as_system(v) for v in vehicles]
-        try:
-            headways = tuple(float(h) for h in self.headways)
-        except (TypeError, ValueError):
-            raise ValueError(f"headways={self.headways!r} must be distances in metres") from None
+        if isinstance(self.headways, str | bytes) or not hasattr(self.headways, "__len__"):
+            raise TypeError(f"headways={self.headways!r} must be a list of distances in metres")
+        headways = tuple(
+            check_range("headway", h, f"headways[{i}]") for i, h in enumerate(self.headways)
+        )
         if len(headways) != len(vehicles) - 1:
             raise ValueError(
                 f"headways={list(headways)} needs one distance per following vehicle "
@@ -134,11 +136,12 @@ def hs20(
             f"rear_spacing={rear_spacing!r} m is outside AASHTO's 14 to 30 ft "
             f"({14 * ft:.4f} to {30 * ft:.4f} m)"
         )
-    if body not in ("independent", "rigid"):
-        raise ValueError(f"body={body!r} must be 'independent' or 'rigid'")
+    check.choice("body", body, ("independent", "rigid"))
     tyres = check.flag("tyres", tyres)
-    omega = 2.0 * math.pi * check.positive("bounce_hz", bounce_hz)
+    omega = 2.0 * math.pi * check_range("vehicle_frequency", bounce_hz, "bounce_hz", warn=False)
     zeta = check.damping_ratio("suspension_damping_ratio", suspension_damping_ratio)
+    check_range("vehicle_damping_ratio", zeta, "suspension_damping_ratio")
+    check_range("footprint", footprint)
     axles = []
     for i, (offset, load) in enumerate(zip((0.0, 14 * ft, 14 * ft + spacing), HS20_AXLE_LOADS,
                                            strict=True)):  # fmt: skip

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from .. import _validation as check
+from ..ranges import check_range
 from ..units import g
 from .system import VehicleSystem
 
@@ -22,6 +23,21 @@ from .system import VehicleSystem
 @dataclass(frozen=True)
 class Vehicle:
     """A sprung mass: mass [kg], suspension stiffness [N/m] and damping coefficient [N s/m].
+
+    Raises
+    ------
+    TypeError
+        A value that is not a number.
+    ValueError
+        A mass, damping ratio or bounce frequency outside its range of validity
+        (:data:`vbi_lib.ranges.RANGES`: ``vehicle_mass``, ``vehicle_damping_ratio``,
+        ``vehicle_frequency``), a stiffness not > 0 or a damping < 0.
+
+    Warns
+    -----
+    OutsideValidityWarning
+        A mass or damping ratio outside the intended range (the frequency is judged when the
+        vehicle's :attr:`system` is built).
 
     Examples
     --------
@@ -38,10 +54,15 @@ class Vehicle:
     damping: float = 0.0
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "mass", check.positive("mass", self.mass))
+        object.__setattr__(self, "mass", check_range("vehicle_mass", self.mass, "mass"))
         object.__setattr__(self, "stiffness", check.positive("stiffness", self.stiffness))
         object.__setattr__(self, "damping", check.non_negative("damping", self.damping))
-        check.damping_ratio("damping_ratio (from damping)", self.damping_ratio)
+        zeta = check.damping_ratio("damping_ratio (from damping)", self.damping_ratio)
+        check_range("vehicle_damping_ratio", zeta, "damping_ratio (from damping)")
+        check_range(
+            "vehicle_frequency", self.frequency_hz, "frequency_hz (from mass and stiffness)",
+            warn=False,
+        )  # fmt: skip
 
     @classmethod
     def from_frequency(
@@ -73,11 +94,12 @@ class Vehicle:
         >>> round(v.stiffness / (u.lbf / u.inch), -1), round(v.damping / (u.lbf / u.inch), 2)
         (879290.0, 2652.23)
         """
-        mass = check.positive("mass", mass)
-        frequency = check.positive("frequency_hz", frequency_hz)
+        mass = check_range("vehicle_mass", mass, "mass", warn=False)
+        frequency = check_range("vehicle_frequency", frequency_hz, "frequency_hz", warn=False)
         zeta = check.damping_ratio("damping_ratio", damping_ratio)
+        zeta = check_range("vehicle_damping_ratio", zeta, "damping_ratio", warn=False)
         omega = 2.0 * math.pi * frequency
-        if damped:
+        if check.flag("damped", damped):
             omega /= math.sqrt(1.0 - zeta**2)
         return cls(mass, mass * omega**2, 2.0 * zeta * mass * omega)
 

@@ -37,13 +37,26 @@ from typing import Any
 
 import numpy as np
 
+from .. import _validation as check
+from ..ranges import check_range, outside_note, warn_outside
 from ..units import g as GRAVITY
 
 __all__ = ["VehicleSystem", "as_system", "stack"]
 
 
+def _numbers(name: str, value: Any, ndmin: int) -> np.ndarray:
+    """``value`` as a float array; text, bools and objects raise ``TypeError`` naming ``name``."""
+    try:
+        raw = np.array(value, ndmin=ndmin)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}={value!r} must be a rectangular array of numbers") from None
+    if raw.dtype.kind not in "iuf":
+        check.finite_array(name, raw.ravel())  # raises TypeError naming the first bad entry
+    return raw.astype(float)
+
+
 def _matrix(name: str, value: Any, shape: tuple[int, int]) -> np.ndarray:
-    array = np.array(value, dtype=float, ndmin=2)
+    array = _numbers(name, value, 2)
     if array.shape != shape:
         raise ValueError(f"{name} must have shape {shape}; got {array.shape}")
     if not np.isfinite(array).all():
@@ -52,7 +65,12 @@ def _matrix(name: str, value: Any, shape: tuple[int, int]) -> np.ndarray:
 
 
 def _vector(name: str, value: Any, size: int, dtype: type = float) -> np.ndarray:
-    array = np.array(value, dtype=dtype, ndmin=1)
+    if dtype is bool:
+        array = np.array(value, ndmin=1)
+        if array.dtype != bool:
+            raise TypeError(f"{name}={value!r} must be True or False for each axle (bools)")
+    else:
+        array = _numbers(name, value, 1)
     if array.shape != (size,):
         raise ValueError(f"{name} must have one entry per axle ({size}); got shape {array.shape}")
     if dtype is float and not np.isfinite(array).all():
@@ -100,9 +118,20 @@ class VehicleSystem:
 
     Raises
     ------
+    TypeError
+        An entry that is not a number (text, ``None``), ``unilateral`` entries that are not
+        bools.
     ValueError
         A matrix of the wrong shape, not symmetric or not (semi-)definite, a load, stiffness
-        or footprint out of range, or static loads that do not balance gravity.
+        or footprint out of range, a weight outside ``vehicle_weight``
+        (:data:`vbi_lib.ranges.RANGES`), or static loads that do not balance gravity.
+
+    Warns
+    -----
+    OutsideValidityWarning
+        A natural frequency on a rigid road outside the intended 0.5 to 50 Hz, or a weight
+        outside the intended range.  A system is the general form of a vehicle: its
+        frequencies have no hard limit, so limiting cases (a stiff, light wheel) can be run.
     """
 
     mass: np.ndarray
@@ -120,14 +149,18 @@ class VehicleSystem:
     name: str = field(default="")
 
     def __post_init__(self) -> None:
-        mass = np.array(self.mass, dtype=float, ndmin=2)
+        mass = _numbers("mass", self.mass, 2)
         n = mass.shape[0]
         if n < 1 or mass.shape != (n, n):
             raise ValueError(f"mass must be a square matrix; got shape {mass.shape}")
-        contact = np.array(self.contact, dtype=float, ndmin=2)
+        if n > 200:
+            raise ValueError(f"mass has {n} degrees of freedom; a vehicle has at most 200")
+        contact = _numbers("contact", self.contact, 2)
         n_axles = contact.shape[0]
         if n_axles < 1:
             raise ValueError("a vehicle needs at least one axle (one row of contact)")
+        if n_axles > 200:
+            raise ValueError(f"contact has {n_axles} axles; a vehicle has at most 200")
         arrays = {
             "mass": _matrix("mass", mass, (n, n)),
             "stiffness": _matrix("stiffness", self.stiffness, (n, n)),
@@ -169,7 +202,16 @@ class VehicleSystem:
             object.__setattr__(self, key, value)
         object.__setattr__(self, "dof_names", names)
         object.__setattr__(self, "dof_units", units)
+        check_range("vehicle_weight", self.weight, "weight (the sum of static_loads)")
         self._check_gravity()
+        notes = [
+            outside_note(
+                "vehicle_frequency", float(f), f"frequency {i + 1} of {self.name or 'the vehicle'}"
+            )
+            for i, f in enumerate(self.frequencies_hz)
+        ]
+        if any(notes):
+            warn_outside(next(n for n in notes if n))
 
     def _check_gravity(self) -> None:
         """The static loads must be the weight of the masses (see the module docstring)."""
@@ -340,7 +382,9 @@ def as_system(vehicle: object) -> VehicleSystem:
     system = getattr(vehicle, "system", None)
     if isinstance(system, VehicleSystem):
         return system
+    shown = repr(vehicle)
+    shown = shown if len(shown) <= 60 else shown[:57] + "..."
     raise TypeError(
         "vehicle must be a vbi vehicle (Vehicle, QuarterCar, IndependentAxles, RigidTruck, "
-        f"Convoy or VehicleSystem), got {type(vehicle).__name__}"
+        f"Convoy or VehicleSystem), got {type(vehicle).__name__} {shown}"
     )

@@ -22,6 +22,7 @@ from functools import cached_property
 import numpy as np
 
 from .. import _validation as check
+from ..ranges import check_range
 from ..units import g as GRAVITY
 from .footprint import DEFAULT_FOOTPRINT
 from .sprung_mass import Vehicle
@@ -56,12 +57,10 @@ class Tyre:
     unilateral: bool = True
 
     def __post_init__(self) -> None:
-        object.__setattr__(
-            self, "unsprung_mass", check.positive("unsprung_mass", self.unsprung_mass)
-        )
+        object.__setattr__(self, "unsprung_mass", check_range("unsprung_mass", self.unsprung_mass))
         object.__setattr__(self, "stiffness", check.positive("tyre stiffness", self.stiffness))
         object.__setattr__(self, "damping", check.non_negative("tyre damping", self.damping))
-        object.__setattr__(self, "footprint", check.non_negative("footprint", self.footprint))
+        object.__setattr__(self, "footprint", check_range("footprint", self.footprint))
         object.__setattr__(self, "unilateral", check.flag("unilateral", self.unilateral))
 
 
@@ -86,6 +85,12 @@ class QuarterCar:
     unilateral
         ``False`` ties the tyre to the road (to compare with the study's assumption).
 
+    Raises
+    ------
+    TypeError, ValueError
+        A value of the wrong type, or a mass, footprint or uncoupled frequency outside its
+        range of validity (:data:`vbi_lib.ranges.RANGES`).
+
     Examples
     --------
     Body bounce 2 Hz on a rigid tyre and axle hop 12 Hz; coupled through the tyre the
@@ -106,11 +111,21 @@ class QuarterCar:
     unilateral: bool = True
 
     def __post_init__(self) -> None:
-        for name in ("sprung_mass", "unsprung_mass", "suspension_stiffness", "tyre_stiffness"):
+        for name, key in (("sprung_mass", "vehicle_mass"), ("unsprung_mass", "unsprung_mass")):
+            object.__setattr__(self, name, check_range(key, getattr(self, name), name))
+        for name in ("suspension_stiffness", "tyre_stiffness"):
             object.__setattr__(self, name, check.positive(name, getattr(self, name)))
-        for name in ("suspension_damping", "tyre_damping", "footprint"):
+        for name in ("suspension_damping", "tyre_damping"):
             object.__setattr__(self, name, check.non_negative(name, getattr(self, name)))
+        object.__setattr__(self, "footprint", check_range("footprint", self.footprint))
         object.__setattr__(self, "unilateral", check.flag("unilateral", self.unilateral))
+        body = math.sqrt(self.suspension_stiffness / self.sprung_mass) / (2 * math.pi)
+        hop = math.sqrt((self.suspension_stiffness + self.tyre_stiffness) / self.unsprung_mass) / (
+            2 * math.pi
+        )
+        for name, value in (("body frequency", body), ("axle hop frequency", hop)):
+            check_range("vehicle_frequency", value, f"{name} (from masses and stiffnesses)",
+                        warn=False)  # fmt: skip
 
     @classmethod
     def from_frequencies(
@@ -131,10 +146,11 @@ class QuarterCar:
         suspension and the tyre, :math:`\\sqrt{(k_s + k_t)/m_u}/2\\pi`.  The damping
         ratios are of those two oscillators.
         """
-        m_s = check.positive("sprung_mass", sprung_mass)
-        m_u = check.positive("unsprung_mass", unsprung_mass)
-        w_s = 2.0 * math.pi * check.positive("body_hz", body_hz)
-        w_u = 2.0 * math.pi * check.positive("axle_hop_hz", axle_hop_hz)
+        m_s = check_range("vehicle_mass", sprung_mass, "sprung_mass", warn=False)
+        m_u = check_range("unsprung_mass", unsprung_mass, warn=False)
+        w_s = 2.0 * math.pi * check_range("vehicle_frequency", body_hz, "body_hz", warn=False)
+        w_u = 2.0 * math.pi * check_range("vehicle_frequency", axle_hop_hz, "axle_hop_hz",
+                                          warn=False)  # fmt: skip
         k_s = m_s * w_s**2
         k_t = m_u * w_u**2 - k_s
         if k_t <= 0:
@@ -143,6 +159,7 @@ class QuarterCar:
                 f"masses: the tyre stiffness would be {k_t:.3g} N/m; raise axle_hop_hz"
             )
         z_s = check.damping_ratio("suspension_damping_ratio", suspension_damping_ratio)
+        check_range("vehicle_damping_ratio", z_s, "suspension_damping_ratio")
         z_t = check.damping_ratio("tyre_damping_ratio", tyre_damping_ratio)
         return cls(m_s, m_u, k_s, 2 * z_s * m_s * w_s, k_t, 2 * z_t * math.sqrt(k_t * m_u),
                    footprint, unilateral)  # fmt: skip
@@ -215,8 +232,8 @@ class Axle:
     tyre: Tyre | None = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "offset", check.non_negative("offset", self.offset))
-        object.__setattr__(self, "load", check.positive("load", self.load))
+        object.__setattr__(self, "offset", check_range("axle_offset", self.offset, "offset"))
+        object.__setattr__(self, "load", check_range("vehicle_weight", self.load, "load"))
         object.__setattr__(self, "stiffness", check.positive("stiffness", self.stiffness))
         object.__setattr__(self, "damping", check.non_negative("damping", self.damping))
         if self.tyre is not None and not isinstance(self.tyre, Tyre):
@@ -238,6 +255,8 @@ def _axles(axles: object) -> tuple[Axle, ...]:
     items = tuple(axles) if isinstance(axles, list | tuple) else ()
     if not items or not all(isinstance(a, Axle) for a in items):
         raise TypeError(f"axles must be a non-empty list of vbi.vehicles.Axle, got {axles!r}")
+    if len(items) > 20:
+        raise ValueError(f"axles has {len(items)} axles; a vehicle has at most 20")
     offsets = [a.offset for a in items]
     if offsets[0] != 0.0 or any(b <= a for a, b in zip(offsets, offsets[1:], strict=False)):
         raise ValueError(

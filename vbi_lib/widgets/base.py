@@ -4,17 +4,21 @@ An explorer recomputes when a control changes (:meth:`Explorer.update`).  If the
 describe no valid crossing (a file that cannot be read, a road too short for the bridge), the
 readout says why and shows no number, ``result`` becomes ``None`` and the figure is emptied,
 so what is on the page always matches the controls.  A value a control refuses or clamps is
-explained on the note line (see :mod:`vbi_lib.widgets.controls`).
+explained on the note line (see :mod:`vbi_lib.widgets.controls`), and so is an input the
+model accepts but was not made for (an :class:`~vbi_lib.OutsideValidityWarning`: a speed
+above 150 km/h, an ISO class beyond E).
 """
 
 from __future__ import annotations
 
 import tempfile
+import warnings
 from pathlib import Path
 from typing import Any, ClassVar
 
 import ipywidgets as w
 
+from ..validity import OutsideValidityWarning
 from .controls import ROAD_PARAMETERS, make_controls
 from .figure import FigureImage
 from .readouts import error_html, notice_html
@@ -85,6 +89,8 @@ class Explorer:
         self.view = FigureImage(self.figure_size)
         self._holding = False
         self._fresh_notice = False
+        self._control_note: str | None = None  # a control's sentence in this change
+        self._outside_said = False  # the note line shows inputs outside their ranges
         self._uploads = tempfile.TemporaryDirectory(prefix="vbi-profiles-")
         self.upload = w.FileUpload(
             accept=".csv,.txt,.dat,.prn", multiple=False, description="upload profile"
@@ -160,9 +166,14 @@ class Explorer:
         return self.result
 
     def update(self) -> Any:
-        """Recompute from the controls and redraw; returns :attr:`result` (``None`` if invalid)."""
+        """Recompute from the controls and redraw; returns :attr:`result` (``None`` if invalid).
+
+        Inputs outside their intended ranges are said on the note line, not as warnings.
+        """
         try:
-            result = self._compute()
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always", OutsideValidityWarning)
+                result = self._compute()
         except (ValueError, TypeError) as exc:
             self.result, self.error = None, str(exc)
             self.readout.value = error_html(self.error)
@@ -170,6 +181,13 @@ class Explorer:
             self.view.render()
             return None
         self.result, self.error = result, None
+        outside = []
+        for item in caught:
+            if issubclass(item.category, OutsideValidityWarning):
+                outside.append(str(item.message))
+            else:  # not ours to handle: pass it on
+                warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
+        self._say_outside(outside)
         self._show(result)
         return result
 
@@ -177,6 +195,20 @@ class Explorer:
     def _note(self, message: str) -> None:
         self.notice.value = notice_html(message)
         self._fresh_notice = True
+        self._control_note = message
+
+    def _say_outside(self, outside: list[str]) -> None:
+        """Put the inputs outside their intended ranges on the note line, after any sentence
+        a control said in this change; take them away when the inputs are back inside."""
+        control, self._control_note = self._control_note, None
+        if outside:
+            sentences = ([control] if control else []) + list(dict.fromkeys(outside))
+            self.notice.value = notice_html(" ".join(sentences))
+            self._outside_said = True
+        elif self._outside_said:
+            self._outside_said = False
+            if control is None:
+                self.notice.value = ""
 
     def _changed(self, change: dict[str, Any]) -> None:
         if not self._fresh_notice:
