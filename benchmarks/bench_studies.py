@@ -22,7 +22,7 @@ from _timing import alternating, load, report
 import vbi_lib as vbi
 from vbi_lib import studies
 from vbi_lib import units as u
-from vbi_lib.studies.runner import _init_worker  # one numba thread per worker, as the pool
+from vbi_lib.studies.chunks import init_worker  # one numba thread per worker, as the pool
 
 
 def scenarios(n: int, seed: int = 0):  # noqa: ANN201
@@ -119,7 +119,7 @@ def main() -> None:
     table = scenarios(n, seed=1)
     context = multiprocessing.get_context("spawn")
     pools = {
-        workers: cf.ProcessPoolExecutor(workers, mp_context=context, initializer=_init_worker)
+        workers: cf.ProcessPoolExecutor(workers, mp_context=context, initializer=init_worker)
         for workers in (1, 2)
     }
     try:

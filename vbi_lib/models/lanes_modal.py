@@ -18,7 +18,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ..modes import beam_modes
+from ..modes import beam_modes, shape_values
 from ..units import g as GRAVITY
 from .base import SUMMARY_SIZE
 from .lanes import (
@@ -51,9 +51,15 @@ from .lanes import (
 T_MV, T_KV, T_CV, T_COUPLED, T_CONVECTIVE, T_DESIGN = range(T_SHARED, T_SHARED + 6)
 T_COUNT = T_SHARED + 6
 # per design (bridge and number of modes) and mode: wavenumber, 2 zeta omega, omega^2,
-# phi at the two midspans, then the coefficients (a, b, c, d) in span 1 and in span 2
+# phi at the two midspans, then the coefficients (a, b, c, d) in span 1 and in span 2, then
+# whether the mode has exponential parts (c or d above rounding, see EXP_NEGLIGIBLE)
 M_KAPPA, M_TWO_ZW, M_W2, M_MID1, M_MID2, M_COEF = range(6)
-M_COUNT = M_COEF + 8
+M_EXP = M_COEF + 8
+M_COUNT = M_EXP + 1
+#: Exponential parts with ``|c|, |d|`` at most this times ``max |a|, |b|`` of their span are
+#: left out (the sine modes of a simply supported span carry ``c, d`` of rounding size only);
+#: exp(-ks) <= 1, so the shape changes by at most this fraction of its amplitude.
+EXP_NEGLIGIBLE = 1e-14
 # per-lane constants, then the per-mode constants from row K_COUNT on (mode-major)
 (K_SPEED, K_START, K_SPAN, K_LENGTH, K_KV, K_CV, K_MV, K_WEIGHT, K_CPL, K_EPS_SPEED,
  K_CV_EPS_SPEED, K_INNER) = range(12)  # fmt: skip
@@ -138,6 +144,19 @@ def _shapes(nodes, shapes, rows, n_modes, const, scratch, bits, scales):
             scratch[_k(S_REST, lane)] = right - xi
             scratch[_k(S_SECOND, lane)] = 1.0 if second else 0.0
         for n in range(n_modes):
+            needs = False  # a lane whose mode n has exponential parts
+            for lane in range(LANES):
+                needs = needs or const[_m(n, M_EXP, lane)] > 0.0
+            if not needs:  # sines and cosines only (a simply supported span's modes)
+                for lane in range(LANES):
+                    k = const[_m(n, M_KAPPA, lane)]
+                    first = M_COEF + 4 if scratch[_k(S_SECOND, lane)] > 0.0 else M_COEF
+                    a = const[_m(n, first, lane)]
+                    b = const[_m(n, first + 1, lane)]
+                    sine, cosine = sincos(k * scratch[_k(S_S, lane)])
+                    shapes[_shape(n_modes, r, n, 0, lane)] = a * sine + b * cosine
+                    shapes[_shape(n_modes, r, n, 1, lane)] = k * (a * cosine - b * sine)
+                continue
             # the two exponentials, packed: polynomial parts, then 2**n from its bits
             for lane in range(LANES):
                 k = const[_m(n, M_KAPPA, lane)]
@@ -410,11 +429,20 @@ def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
         zeta = np.full(count, bridge.damping_ratio)
         designs[d, M_TWO_ZW, :count] = 2.0 * zeta * basis.omega
         designs[d, M_W2, :count] = basis.omega * basis.omega
-        mid = basis.shape(np.array(bridge.midspans))
+        mid = np.empty((bridge.n_spans, count))  # phi at each midspan, compiled
+        slope, curvature = np.empty(count), np.empty(count)
+        supports = np.array(bridge.supports)
+        for j, station in enumerate(bridge.midspans):
+            shape_values(station, supports, basis.wavenumber, basis.coefficients, mid[j], slope,
+                         curvature)  # fmt: skip
         designs[d, M_MID1, :count] = mid[0]
         for j in range(bridge.n_spans):
             designs[d, M_COEF + 4 * j : M_COEF + 4 * j + 4, :count] = basis.coefficients[:, j].T
             if j > 0:
                 designs[d, M_MID2, :count] = mid[j]
+        coef = np.abs(basis.coefficients)  # (N, n_spans, 4)
+        size = np.maximum(coef[:, :, 0], coef[:, :, 1])
+        exps = (np.maximum(coef[:, :, 2], coef[:, :, 3]) > EXP_NEGLIGIBLE * size).any(axis=1)
+        designs[d, M_EXP, :count] = exps
     # a block holds one number of modes
     return launch((_run, _run_serial), batch, table, batch.modes, counts, designs)
