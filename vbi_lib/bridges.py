@@ -32,7 +32,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 from . import _validation as check
 from .continuous_beams import natural_wavenumbers, support_stations
@@ -272,9 +272,12 @@ class Bridge:
         """Total length ``sum L_j`` [m] (``N L`` for equal spans)."""
         return self.supports[-1]
 
-    @property
+    @cached_property
     def supports(self) -> tuple[float, ...]:
-        """Stations of the supports from the start of the bridge [m], ``n_spans + 1`` of them."""
+        """Stations of the supports from the start of the bridge [m], ``n_spans + 1`` of them.
+
+        Computed once per bridge (a frozen object): every crossing and batch asks for them.
+        """
         return tuple(float(s) for s in support_stations(self.spans))
 
     @property
