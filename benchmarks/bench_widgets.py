@@ -4,7 +4,7 @@ Run: ``.venv/bin/python benchmarks/bench_widgets.py``.  Three measurements of th
 explorer's update when the speed slider moves, from the inside out:
 
 1. in this process (the explorer's ``update``: one crossing, the lines' new data, one Agg
-   draw and the PNG);
+   draw and the PNG), with the study's sprung mass and with the quarter car;
 2. in a real Jupyter kernel (``jupyter_client``), the control set as a message from the page
    would set it, the widget messages sent on the kernel's sockets;
 3. in Chromium on the Voila app of ``make explore``: from the key press on the slider to the
@@ -36,10 +36,12 @@ CHROMIUM = Path("/usr/bin/chromium")
 PRESSES = 30
 
 
-def in_process() -> tuple[float, float, float, float]:
-    from vbi_lib.widgets import CrossingExplorer, FrequencyExplorer, SpeedExplorer
+def slider_moves(vehicle_type: str) -> tuple[float, float]:
+    """Median time of a speed-slider move of the crossing explorer, and the share of full
+    redraws, with the given truck model."""
+    from vbi_lib.widgets import CrossingExplorer
 
-    explorer = CrossingExplorer()
+    explorer = CrossingExplorer(vehicle_type=vehicle_type)
     # up and down the slider, 1 mph a step: the axes rescale now and then, as they do in use
     speeds = iter([41.0 + k for k in range(16)] * 2 + [56.0 - k for k in range(16)] * 2)
 
@@ -47,13 +49,20 @@ def in_process() -> tuple[float, float, float, float]:
         explorer.controls["speed_mph"].value = next(speeds)
 
     one = median_time(move, PRESSES)
-    full = explorer.view.full_draws / explorer.view.renders
+    return one, explorer.view.full_draws / explorer.view.renders
+
+
+def in_process() -> tuple[float, float, float, float, float]:
+    from vbi_lib.widgets import FrequencyExplorer, SpeedExplorer
+
+    one, full = slider_moves("sprung-mass")
+    quarter, _ = slider_moves("quarter-car")
     sweep = SpeedExplorer()
     damping = iter([0.10, 0.11] * 100)
     speed = median_time(lambda: sweep.set(truck_damping=next(damping)), 5)
     heat = FrequencyExplorer()
     frequency = median_time(heat.update, 5)
-    return one, full, speed, frequency
+    return one, full, quarter, speed, frequency
 
 
 KERNEL_CODE = f"""
@@ -175,11 +184,12 @@ def in_browser() -> float | None:
 
 
 if __name__ == "__main__":
-    one, full, speed, frequency = in_process()
+    one, full, quarter, speed, frequency = in_process()
     print(
         f"crossing explorer, one slider move, in this process (Agg + PNG): {one * 1e3:.1f} ms "
         f"({full:.0%} of the updates redrew the whole figure)"
     )
+    print(f"the same with the quarter car: {quarter * 1e3:.1f} ms")
     kernel = in_kernel()
     print(f"crossing explorer, one slider move, in a Jupyter kernel: {kernel * 1e3:.1f} ms")
     seen = in_browser()

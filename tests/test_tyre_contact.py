@@ -56,7 +56,7 @@ def test_lift_off_is_the_bilateral_contact_while_it_stays_compressive() -> None:
 def test_quarter_car_tends_to_the_sprung_mass() -> None:
     """A light axle on a stiff tyre: the quarter car becomes the study's sprung mass."""
     gaps = []
-    for fraction, ratio in ((0.03, 30.0), (0.003, 300.0)):
+    for fraction, ratio in ((0.03, 30.0), (0.005, 250.0)):  # axle hop 160, 900 Hz
         result = compare_contact(BRIDGE, TRUCK, GENTLE, [12.0, 20.0], 40.0, footprint=0.0,
                                  unsprung_fraction=fraction, tyre_stiffness_ratio=ratio,
                                  step_factors=(1.0,))  # fmt: skip

@@ -4,7 +4,9 @@
 and the model's options without going through :mod:`vbi_lib.widgets`, following the rules the
 explorers document (US customary controls; generated roads sampled every inch from station 0,
 200 ft longer than the approach and the bridge; a shift slides the road back; the first
-support ``approach_ft`` after the road's first station; one mode = the study's model).
+support ``approach_ft`` after the road's first station; one mode = the study's model; the
+quarter car from its uncoupled frequencies, weight split by ``unsprung_fraction``, undamped
+tyre of the library's default 0.25 m footprint).
 ``CHANGES`` gives each control a new value and the settings under which it matters.
 """
 
@@ -32,6 +34,11 @@ CHANGES: dict[str, tuple[dict[str, Any], Any]] = {
     "truck_weight_kip": ({}, 50.0),
     "truck_frequency_hz": ({}, 2.4),
     "truck_damping": ({}, 0.25),
+    # the frequency map runs bodies up to 2 x 3 Hz: an axle hop of 20 Hz keeps every tyre
+    # stiffness positive at unsprung fractions from 0.1 (the lowest hop is 18 Hz)
+    "vehicle_type": ({"axle_hop_hz": 20.0}, "quarter-car"),
+    "axle_hop_hz": ({"vehicle_type": "quarter-car", "axle_hop_hz": 20.0}, 26.0),
+    "unsprung_fraction": ({"vehicle_type": "quarter-car", "axle_hop_hz": 20.0}, 0.14),
     "speed_mph": ({}, 55.0),
     "road": ({"road": "iso-class"}, "bump"),
     "iso_class": ({"road": "iso-class"}, "C"),
@@ -110,9 +117,27 @@ def road_of(v: dict[str, Any]) -> vbi.Profile:
     return road
 
 
+def quarter_car(v: dict[str, Any]) -> vbi.QuarterCar:
+    """The quarter car of the controls, from its own formulas (not ``from_frequencies``).
+
+    Body on its suspension alone at ``truck_frequency_hz``: ``k_s = m_s (2 pi f_body)^2``;
+    axle between suspension and tyre at ``axle_hop_hz``: ``k_t = m_u (2 pi f_hop)^2 - k_s``;
+    suspension damping ratio ``truck_damping`` of the body's oscillator; no tyre damping.
+    """
+    mass = v["truck_weight_kip"] * u.kip / u.g
+    m_u = v["unsprung_fraction"] * mass
+    m_s = mass - m_u
+    w_body = 2 * np.pi * v["truck_frequency_hz"]
+    w_hop = 2 * np.pi * v["axle_hop_hz"]
+    k_s = m_s * w_body**2
+    k_t = m_u * w_hop**2 - k_s
+    c_s = 2 * v["truck_damping"] * m_s * w_body
+    return vbi.QuarterCar(m_s, m_u, k_s, c_s, k_t, 0.0, footprint=0.25, unilateral=True)
+
+
 def direct_inputs(
     v: dict[str, Any],
-) -> tuple[vbi.Bridge, vbi.Vehicle, vbi.Profile, float, float, dict[str, Any]]:
+) -> tuple[vbi.Bridge, object, vbi.Profile, float, float, dict[str, Any]]:
     """Bridge, truck, road, speed [m/s], bridge start [m] and options of the controls."""
     bridge = vbi.Bridge.from_frequency(
         v["span_ft"] * u.ft,
@@ -121,9 +146,12 @@ def direct_inputs(
         v["bridge_frequency_hz"],
         v["bridge_damping"],
     )
-    truck = vbi.Vehicle.from_frequency(
-        v["truck_weight_kip"] * u.kip / u.g, v["truck_frequency_hz"], v["truck_damping"]
-    )
+    if v.get("vehicle_type", "sprung-mass") == "quarter-car":
+        truck = quarter_car(v)
+    else:
+        truck = vbi.Vehicle.from_frequency(
+            v["truck_weight_kip"] * u.kip / u.g, v["truck_frequency_hz"], v["truck_damping"]
+        )
     road = road_of(v)
     options: dict[str, Any] = {"coupled": v["coupled"]}
     if v["modes"] > 1:

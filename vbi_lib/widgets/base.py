@@ -19,7 +19,7 @@ from typing import Any, ClassVar
 import ipywidgets as w
 
 from ..validity import OutsideValidityWarning
-from .controls import ROAD_PARAMETERS, make_controls
+from .controls import ROAD_PARAMETERS, VEHICLE_PARAMETERS, make_controls
 from .figure import FigureImage
 from .readouts import error_html, notice_html
 from .scenario import Scenario
@@ -37,7 +37,14 @@ SECTIONS = {
         "bridge_weight_kip_per_ft",
         "bridge_damping",
     ),
-    "Truck": ("truck_weight_kip", "truck_frequency_hz", "truck_damping"),
+    "Truck": (
+        "vehicle_type",
+        "truck_weight_kip",
+        "truck_frequency_hz",
+        "truck_damping",
+        "unsprung_fraction",
+        "axle_hop_hz",
+    ),
     "Speed": ("speed_mph", "speed_range_mph", "n_speeds"),
     "Truck-to-bridge frequency ratio": ("ratio_range", "n_ratios"),
     "Road": (
@@ -104,7 +111,7 @@ class Explorer:
             [self._panel(), w.VBox([self.readout, self.notice, *self._extras(), self.view.widget])]
         )
         self.widget.add_class("vbi-explorer")
-        self._show_road_controls()
+        self._show_used_controls()
         self.update()
 
     # ------------------------------------------------------------------ for subclasses
@@ -161,7 +168,7 @@ class Explorer:
                 self.controls[name].value = value
         finally:
             self._holding = False
-            self._show_road_controls()
+            self._show_used_controls()
             self.update()
         return self.result
 
@@ -216,8 +223,8 @@ class Explorer:
         self._fresh_notice = False
         if self._holding:
             return
-        if change["owner"] is self.controls.get("road"):
-            self._show_road_controls()
+        if change["owner"] in (self.controls.get("road"), self.controls.get("vehicle_type")):
+            self._show_used_controls()
         self._moved()
 
     def _moved(self) -> None:
@@ -232,14 +239,17 @@ class Explorer:
         path.write_bytes(bytes(item["content"]))
         self.set(road="measured", profile_path=str(path))
 
-    def _show_road_controls(self) -> None:
-        if "road" not in self.controls:
-            return
-        used = set(ROAD_PARAMETERS[self.controls["road"].value])
-        for name in {p for group in ROAD_PARAMETERS.values() for p in group}:
-            if name in self.controls:
-                self.controls[name].layout.display = "" if name in used else "none"
-        self.upload.layout.display = "" if "profile_path" in used else "none"
+    def _show_used_controls(self) -> None:
+        """Show the road's and the truck's parameters the chosen kinds use; hide the others."""
+        for key, groups in (("road", ROAD_PARAMETERS), ("vehicle_type", VEHICLE_PARAMETERS)):
+            if key not in self.controls:
+                continue
+            used = set(groups[self.controls[key].value])
+            for name in {p for group in groups.values() for p in group}:
+                if name in self.controls:
+                    self.controls[name].layout.display = "" if name in used else "none"
+            if key == "road":
+                self.upload.layout.display = "" if "profile_path" in used else "none"
 
     def _panel(self) -> w.VBox:
         rows: list[Any] = []

@@ -33,7 +33,14 @@ from typing import Any
 import ipywidgets as w
 from traitlets import CFloat, CInt, TraitError, Tuple, Unicode, validate
 
-from .scenario import MAX_MODES, MAX_ROAD_SHIFT_FT, ROADS, Scenario
+from .scenario import (
+    MAX_MODES,
+    MAX_ROAD_SHIFT_FT,
+    MAX_UNSPRUNG_FRACTION,
+    ROADS,
+    VEHICLE_TYPES,
+    Scenario,
+)
 
 __all__ = ["SPECS", "ControlValueError", "make_controls"]
 
@@ -239,6 +246,12 @@ SPECS: dict[str, dict[str, Any]] = {
     "truck_weight_kip": _float("truck weight [kip]", "kip", 5, 160, 0.5),
     "truck_frequency_hz": _float("truck frequency [Hz]", "Hz", 0.5, 15, 0.05),
     "truck_damping": _float("truck damping", "", 0, 0.5, 0.01, readout_format=".0%"),
+    "vehicle_type": _choice("truck model", [(label, key) for key, label in VEHICLE_TYPES.items()]),
+    # the soft range of RANGES["vehicle_frequency"] tops out at 50 Hz; trucks hop at 8-15 Hz
+    "axle_hop_hz": _float("axle hop [Hz]", "Hz", 2, 50, 0.5),
+    "unsprung_fraction": _float(
+        "unsprung share of weight", "", 0.02, MAX_UNSPRUNG_FRACTION, 0.01, readout_format=".0%"
+    ),
     "speed_mph": _float("speed [mph]", "mph", 5, 100, 1),
     "road": _choice("road", [(label, key) for key, label in ROADS.items()]),
     "iso_class": _choice("ISO 8608 class", [(c, c) for c in "ABCDEFGH"]),
@@ -293,6 +306,13 @@ SWEEP_DEFAULTS: dict[str, Any] = {
     "n_speeds": 36,
     "ratio_range": (0.5, 2.0),
     "n_ratios": 13,
+}
+
+#: Which truck parameters each vehicle type adds to weight, frequency and damping (the others
+#: are hidden).
+VEHICLE_PARAMETERS = {
+    "sprung-mass": (),
+    "quarter-car": ("unsprung_fraction", "axle_hop_hz"),
 }
 
 #: Which road parameters each road kind uses (the others are hidden).

@@ -1,8 +1,9 @@
 """One crossing, live: the bridge's midspan response and the tyre's contact force.
 
-Every control of a :class:`~vbi_lib.widgets.Scenario` (bridge, truck, speed, road, model) is
-offered; a change runs one :func:`vbi_lib.simulate` (about a millisecond) and updates the
-two curves' data in a figure built once, so an update costs one Agg draw, not a new figure.
+Every control of a :class:`~vbi_lib.widgets.Scenario` (bridge, truck and its type, speed,
+road, model) is offered; a change runs one :func:`vbi_lib.simulate` (a few milliseconds) and
+updates the two curves' data in a figure built once, so an update costs one Agg draw, not a
+new figure.
 """
 
 from __future__ import annotations
@@ -113,7 +114,12 @@ class CrossingExplorer(Explorer):
         self.view.render()
         # the readout last: when it changes on the page, the new figure is already there
         scenario = self.scenario()
-        self.readout.value = crossing_html(crossing, scenario.road_text(), scenario.model_text())
+        self.readout.value = crossing_html(
+            crossing,
+            scenario.road_text(),
+            scenario.model_text(),
+            scenario.vehicle_text(crossing.vehicle),
+        )
 
     def _blank(self) -> None:
         for ax in self.axes:

@@ -44,8 +44,9 @@ class FrequencyMap:
     daf
         ``(n_speeds, n_ratios, 2)`` DAF of each span (NaN for a missing second span, or a
         cell not computed yet).
-    contact_force_amplification, min_contact_force_ratio, tension_fraction
-        The contact checks of each cell, ``(n_speeds, n_ratios)``.
+    contact_force_amplification, min_contact_force_ratio, tension_fraction, flight_fraction
+        The contact checks of each cell, ``(n_speeds, n_ratios)`` (``flight_fraction``: the
+        time on the bridge a quarter car's tyre was off the road; zeros for the sprung mass).
     """
 
     model: str
@@ -56,6 +57,11 @@ class FrequencyMap:
     contact_force_amplification: np.ndarray
     min_contact_force_ratio: np.ndarray
     tension_fraction: np.ndarray
+    flight_fraction: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        if self.flight_fraction is None:
+            object.__setattr__(self, "flight_fraction", np.zeros_like(self.tension_fraction))
 
     @classmethod
     def from_batch(
@@ -72,6 +78,7 @@ class FrequencyMap:
             contact_force_amplification=batch.contact_force_amplification.reshape(shape),
             min_contact_force_ratio=batch.min_contact_force_ratio.reshape(shape),
             tension_fraction=batch.tension_fraction.reshape(shape),
+            flight_fraction=batch.flight_fraction.reshape(shape),
         )
 
     @property
@@ -80,9 +87,15 @@ class FrequencyMap:
         return self.ratio * self.bridge_frequency_hz
 
     @property
-    def lost_contact(self) -> np.ndarray:
-        """Cells whose contact force became tensile on the bridge (outside validity)."""
+    def outside_validity(self) -> np.ndarray:
+        """Cells whose contact force became tensile on the bridge (the sprung mass's)."""
         return self.min_contact_force_ratio < 0.0
+
+    @property
+    def lost_contact(self) -> np.ndarray:
+        """Cells that lost contact on the bridge: tension (outside validity) or a tyre's
+        flight (a quarter car's, modelled), as :attr:`vbi_lib.Crossing.lost_contact`."""
+        return self.outside_validity | (self.flight_fraction > 0.0)
 
     @property
     def largest_daf(self) -> np.ndarray:
@@ -101,6 +114,7 @@ class FrequencyMap:
                 "daf span 2": self.daf[..., 1].ravel(),
                 "contact force amplification": self.contact_force_amplification.ravel(),
                 "min contact force ratio": self.min_contact_force_ratio.ravel(),
+                "flight fraction": self.flight_fraction.ravel(),
                 "lost contact": self.lost_contact.ravel(),
             }
         )
@@ -160,7 +174,9 @@ class FrequencyExplorer(Explorer):
     **values
         Start values of controls by parameter: the fields of :class:`Scenario` but
         ``truck_frequency_hz`` and ``speed_mph``, and ``ratio_range``, ``n_ratios``,
-        ``speed_range_mph`` and ``n_speeds``.
+        ``speed_range_mph`` and ``n_speeds``.  For the quarter car the ratio is of its body
+        frequency on a rigid tyre (``truck_frequency_hz``); its axle hop stays
+        ``axle_hop_hz``, which must stay above the body's limit at every ratio.
 
     Attributes
     ----------
@@ -189,6 +205,18 @@ class FrequencyExplorer(Explorer):
         ratio = np.linspace(low, high, self.controls["n_ratios"].value)
         low, high = self.controls["speed_range_mph"].value
         return ratio, np.linspace(low, high, self.controls["n_speeds"].value) * u.mph
+
+    def scenario(self) -> Scenario:
+        """The controls' :class:`Scenario`, its truck at the lowest frequency ratio.
+
+        The map sets the truck's frequency cell by cell; the scenario carries the lowest, so
+        that a quarter car is checked against the first column rather than a frequency the
+        map never runs (the other columns are checked when the map is computed).
+        """
+        values = self.values()
+        low = values["ratio_range"][0] * values["bridge_frequency_hz"]
+        fields = {k: v for k, v in values.items() if k in Scenario.__dataclass_fields__}
+        return Scenario(**fields, truck_frequency_hz=low)
 
     def _extras(self) -> list[w.Widget]:
         self.button = w.Button(description="Compute map", button_style="primary")
@@ -221,10 +249,13 @@ class FrequencyExplorer(Explorer):
         profile = scenario.profile()
         bridge = scenario.bridge()
         ratio, speed = self.grid()
-        vehicles = [
-            scenario.replace(truck_frequency_hz=r * bridge.first_frequency_hz).vehicle()
-            for r in ratio
-        ]
+        vehicles = []
+        for r in ratio:
+            try:
+                truck = scenario.replace(truck_frequency_hz=r * bridge.first_frequency_hz)
+            except ValueError as exc:  # a quarter car's axle hop too low for this body
+                raise ValueError(f"at the frequency ratio {r:.2f}: {exc}") from None
+            vehicles.append(truck.vehicle())
         self._context = (scenario, bridge)
 
         def as_map(batch: BatchResult) -> FrequencyMap:
@@ -279,6 +310,7 @@ class FrequencyExplorer(Explorer):
             where,
             scenario.model_text(),
             done,
+            result.flight_fraction.ravel(),
         )
 
     def _resonances(self, scenario: Scenario, bridge: object, result: FrequencyMap) -> None:

@@ -3,7 +3,9 @@
 Every readout that shows a DAF says in the same sentence whether the truck kept contact with
 the road.  The study's sprung mass is attached to the road; when the computed contact force
 becomes tensile a real tyre would lift off, so such a DAF is printed only with the words
-"outside the model's validity" (see :mod:`vbi_lib.validity`).  Code allowances come from
+"outside the model's validity" (see :mod:`vbi_lib.validity`).  A quarter car's tyre can
+leave the road: its flights are modelled (the wheel flies and lands again), so the DAF stays
+valid and the readout says for how long the wheel was off the road.  Code allowances come from
 :mod:`vbi_lib.amplification` as DAFs (``1 + IM``).
 
 >>> daf_text([1.0874, float("nan")])
@@ -34,6 +36,7 @@ __all__ = [
 
 _BAD = "color:#a40000"
 _GOOD = "color:#1f6f1f"
+_WARN = "color:#8a5a00"
 
 
 def code_allowances(bridge: Bridge) -> dict[str, float]:
@@ -75,18 +78,51 @@ def _contact(min_ratio: float, tension: float) -> str:
     )
 
 
-def crossing_html(crossing: Crossing, road: str, model: str) -> str:
-    """The readout of one crossing: DAF and contact, codes, inputs and the model that ran."""
-    bridge, truck = crossing.bridge, crossing.vehicle
+def _wheel(min_ratio: float, flight: float) -> str:
+    """A tyre that can leave the road: whether and for how long it did (modelled, valid)."""
+    if flight > 0.0:
+        text = (
+            f'<span style="{_WARN}"><b>the wheel left the road for {flight:.0%} of the time on '
+            "the bridge</b></span> (the tyre cannot pull: the wheel flew and landed again, "
+            "which the quarter car models, so this DAF counts the landings)"
+        )
+        if flight > 0.25:
+            text += (
+                "; a wheel bouncing this much makes the DAF sensitive to every input, so read "
+                "it as a rough value"
+            )
+        return text
+    return (
+        f'<span style="{_GOOD}">the wheel stayed on the road</span> (smallest tyre force '
+        f"{min_ratio:.2f} &times; the weight)"
+    )
+
+
+def crossing_html(crossing: Crossing, road: str, model: str, vehicle: str) -> str:
+    """The readout of one crossing: DAF and contact, codes, inputs and the model that ran.
+
+    ``road``, ``model`` and ``vehicle`` describe the inputs in words
+    (:meth:`~vbi_lib.widgets.Scenario.road_text` and its siblings).  Whether the contact
+    could leave the road is read from the crossing's vehicle: a tyre that can (a quarter
+    car) gets the flight fraction, a contact that cannot (the study's sprung mass) the
+    tension check.
+    """
+    bridge = crossing.bridge
+    if crossing.system.has_unilateral:
+        contact = "quarter car: " + _wheel(crossing.min_contact_force_ratio,
+                                           crossing.flight_fraction)  # fmt: skip
+    else:
+        contact = "sprung mass: " + _contact(
+            crossing.min_contact_force_ratio, crossing.tension_fraction
+        )
     lines = [
-        f"<b>{daf_text(crossing.daf)}</b> &mdash; "
-        + _contact(crossing.min_contact_force_ratio, crossing.tension_fraction),
+        f"<b>{daf_text(crossing.daf)}</b> &mdash; {contact}",
         f"largest contact force {crossing.contact_force_amplification:.2f} &times; the weight; "
         + _codes(bridge),
         f"bridge {display.fmt(bridge.span, 'length')} &times; {bridge.n_spans}, "
-        f"f&#8321; {bridge.first_frequency_hz:.2f} Hz; truck {display.fmt(truck.weight, 'weight')}"
-        f", {truck.frequency_hz:.2f} Hz; speed {display.fmt(crossing.speed, 'speed')}; "
-        f"road: {html.escape(road, quote=False)}",
+        f"f&#8321; {bridge.first_frequency_hz:.2f} Hz; speed "
+        f"{display.fmt(crossing.speed, 'speed')}; road: {html.escape(road, quote=False)}",
+        f"truck: {html.escape(vehicle, quote=False)}",
         f"model: {html.escape(model, quote=False)}; largest step {crossing.dt * 1e3:.2f} ms",
     ]
     return '<div class="vbi-readout">' + "<br>".join(lines) + "</div>"
@@ -99,8 +135,9 @@ def sweep_html(
     what: Callable[[int], str],
     model: str,
     done: int | None = None,
+    flight_fraction: np.ndarray | None = None,
 ) -> str:
-    """The readout of a sweep: the largest DAF that kept contact, and how many did not.
+    """The readout of a sweep: the largest valid DAF, how many lost contact, how many flew.
 
     Parameters
     ----------
@@ -115,18 +152,30 @@ def sweep_html(
         Which model ran, in words.
     done
         Crossings computed so far, while the sweep runs.
+    flight_fraction
+        ``(n,)`` fraction of the time on the bridge a tyre was off the road (a quarter car's
+        modelled flights: their DAFs stay valid); ``None``: no tyre could leave the road.
     """
     daf = largest_daf(np.asarray(daf))
     computed = np.isfinite(daf)
     lost = computed & (np.asarray(min_contact_force_ratio) < 0.0)
     kept = computed & ~lost
+    flight = np.zeros(daf.shape) if flight_fraction is None else np.asarray(flight_fraction)
+    flew = kept & (flight > 0.0)
     parts = []
     if done is not None:
         parts.append(f"<i>computing: {done} of {daf.size} crossings done&hellip;</i>")
     if kept.any():
         best = int(np.flatnonzero(kept)[np.argmax(daf[kept])])
+        among = "within the model's validity" if flew.any() else "that kept contact"
+        parts.append(f"<b>largest DAF {daf[best]:.3f}</b> {what(best)}, among crossings {among}")
+    if flew.any():
+        longest = int(np.flatnonzero(flew)[np.argmax(flight[flew])])
         parts.append(
-            f"<b>largest DAF {daf[best]:.3f}</b> {what(best)}, among crossings that kept contact"
+            f'<span style="{_WARN}"><b>the wheel left the road in {int(flew.sum())} of '
+            f"{int(computed.sum())} crossings</b> (marked &times;; longest "
+            f"{flight[longest]:.0%} of the time on the bridge, {what(longest)}): the tyre "
+            "flew and landed again, which the quarter car models, so their DAFs count</span>"
         )
     n_lost = int(lost.sum())
     if n_lost:
@@ -136,7 +185,7 @@ def sweep_html(
             f"contact</b> (marked &times;): the tyre would leave the road, so their DAFs (up to "
             f"{daf[worst]:.3f} {what(worst)}) are outside the model's validity</span>"
         )
-    elif computed.any():
+    elif computed.any() and not flew.any():
         parts.append(f'<span style="{_GOOD}">every crossing kept contact</span>')
     parts.append(_codes(bridge))
     parts.append(f"model: {html.escape(model, quote=False)}")

@@ -1,10 +1,26 @@
-"""What an explorer's controls describe: one crossing, in the study's engineering units.
+r"""What an explorer's controls describe: one crossing, in the study's engineering units.
 
 A :class:`Scenario` holds the values of the controls (US customary units, as the study's
 tables) and turns them into the library's SI inputs: a :class:`~vbi_lib.Bridge`
-(:meth:`~vbi_lib.Bridge.from_frequency`: span, mass per length and first frequency), a
-:class:`~vbi_lib.Vehicle` (the study's sprung mass (85), from its weight, bounce frequency and
-damping ratio), the road the truck drives on and the options of :func:`vbi_lib.simulate`.
+(:meth:`~vbi_lib.Bridge.from_frequency`: span, mass per length and first frequency), the
+truck (one of :data:`VEHICLE_TYPES`: the study's sprung mass (85), a
+:class:`~vbi_lib.Vehicle`, or a :class:`~vbi_lib.QuarterCar` whose tyre can leave the road),
+the road the truck drives on and the options of :func:`vbi_lib.simulate`.
+
+Both trucks weigh ``truck_weight_kip`` and bounce at ``truck_frequency_hz`` with the
+damping ratio ``truck_damping`` on their suspension.  The quarter car splits the weight into
+a sprung (body) and an unsprung (axle and wheels) mass, ``unsprung_fraction`` of it, and puts
+a tyre under the axle (:meth:`~vbi_lib.QuarterCar.from_frequencies`):
+
+.. math::
+    k_s = m_s (2\pi f_{body})^2, \qquad k_t = m_u (2\pi f_{hop})^2 - k_s,
+    \qquad c_s = 2 \zeta m_s 2\pi f_{body},
+
+with ``f_body = truck_frequency_hz`` (the body on its suspension, the tyre held rigid),
+``f_hop = axle_hop_hz`` (the axle between suspension and tyre, the body held still) and
+``zeta = truck_damping``; the tyre is undamped and touches the road over
+:data:`~vbi_lib.vehicles.DEFAULT_FOOTPRINT` (0.25 m).  The tyre must be a spring,
+``k_t > 0``, so ``axle_hop_hz`` must exceed ``truck_frequency_hz * sqrt(m_s / m_u)``.
 
 The road is one of :data:`ROADS`.  Generated roads start at station 0 (where the truck starts,
 at rest) and are sampled every inch, as the study's; the first support is ``approach_ft``
@@ -19,6 +35,9 @@ a new one.
 (4.2, 2)
 >>> s.simulate_options()
 {'model': 'one-coordinate', 'coupled': True}
+>>> car = s.replace(vehicle_type="quarter-car").vehicle()
+>>> type(car).__name__, round(car.unsprung_mass / (car.sprung_mass + car.unsprung_mass), 3)
+('QuarterCar', 0.1)
 """
 
 from __future__ import annotations
@@ -32,13 +51,23 @@ from pathlib import Path
 import numpy as np
 
 from .. import _validation as check
+from .. import display
 from .. import units as u
 from ..bridges import Bridge
 from ..profile_files import LENGTH_UNITS
 from ..profiles import ISO_CLASS_MEANS, Profile
-from ..vehicles import Vehicle
+from ..ranges import check_range
+from ..vehicles import QuarterCar, Vehicle
 
-__all__ = ["MAX_MODES", "MAX_ROAD_SHIFT_FT", "ROADS", "ROAD_SPACING", "Scenario"]
+__all__ = [
+    "MAX_MODES",
+    "MAX_ROAD_SHIFT_FT",
+    "MAX_UNSPRUNG_FRACTION",
+    "ROADS",
+    "ROAD_SPACING",
+    "VEHICLE_TYPES",
+    "Scenario",
+]
 
 #: The kinds of road an explorer offers: key and what the control shows.
 ROADS = {
@@ -50,6 +79,15 @@ ROADS = {
     "measured": "measured profile file",
 }
 
+#: The kinds of truck an explorer offers: key and what the control shows.
+VEHICLE_TYPES = {
+    "sprung-mass": "sprung mass (the study's)",
+    "quarter-car": "quarter car (tyre can leave the road)",
+}
+
+#: Largest share of the truck's weight the quarter car's unsprung mass may take.
+MAX_UNSPRUNG_FRACTION = 0.5
+
 #: Sample spacing of the generated roads [m] (one inch, as the study's profiles).
 ROAD_SPACING = 1 * u.inch
 
@@ -60,10 +98,10 @@ MAX_ROAD_SHIFT_FT = 200.0
 MAX_MODES = 20
 
 _INTEGERS = {"n_spans", "seed", "modes"}
-_TEXTS = {"road", "iso_class", "profile_path", "profile_unit"}
+_TEXTS = {"vehicle_type", "road", "iso_class", "profile_path", "profile_unit"}
 _POSITIVE = ("span_ft", "bridge_frequency_hz", "bridge_weight_kip_per_ft", "truck_weight_kip",
-             "truck_frequency_hz", "speed_mph", "c10_e6", "waviness", "wavelength_ft",
-             "bump_width_ft")  # fmt: skip
+             "truck_frequency_hz", "axle_hop_hz", "unsprung_fraction", "speed_mph", "c10_e6",
+             "waviness", "wavelength_ft", "bump_width_ft")  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -77,8 +115,21 @@ class Scenario:
     bridge_frequency_hz, bridge_weight_kip_per_ft, bridge_damping
         First natural frequency [Hz], weight per length [kip/ft] (the mass is weight / g) and
         damping ratio of the bridge.
+    vehicle_type
+        A key of :data:`VEHICLE_TYPES`: ``"sprung-mass"`` (the study's, its contact never
+        leaves the road) or ``"quarter-car"`` (sprung and unsprung masses, a tyre that can
+        leave the road); see the module docstring.
     truck_weight_kip, truck_frequency_hz, truck_damping
-        The sprung mass's weight [kip], undamped bounce frequency [Hz] and damping ratio.
+        The truck's weight [kip] (all of it, for both types), undamped body-bounce frequency
+        [Hz] (the quarter car's with its tyre held rigid) and suspension damping ratio.
+    axle_hop_hz, unsprung_fraction
+        The quarter car's axle-hop frequency [Hz] (unsprung mass between suspension and tyre,
+        :data:`vbi_lib.ranges.RANGES` ``vehicle_frequency``: refused outside 0.05 to 1000 Hz,
+        intended 0.5 to 50 Hz; trucks hop at 8 to 15 Hz) and the share of the weight below
+        the suspension, ``0 < unsprung_fraction <=`` :data:`MAX_UNSPRUNG_FRACTION` (0.1 to
+        0.2 for a truck).  Defaults 15 Hz and 0.15: with the study's 3.5 Hz body the tyre is
+        then about twice as stiff as the suspension, and the frequency map's bodies up to
+        twice a 3 Hz bridge's frequency can still be built.  Unused for the sprung mass.
     speed_mph
         Truck speed [mph].
     road
@@ -109,7 +160,9 @@ class Scenario:
     Raises
     ------
     ValueError, TypeError
-        A value of the wrong kind or outside what the model allows, named as the field.
+        A value of the wrong kind or outside what the model allows, named as the field; for
+        the quarter car, an ``axle_hop_hz`` too low for its body (the tyre's stiffness
+        would not be positive).
     """
 
     span_ft: float = 100.0
@@ -120,6 +173,9 @@ class Scenario:
     truck_weight_kip: float = 77.2
     truck_frequency_hz: float = 3.5
     truck_damping: float = 0.10
+    vehicle_type: str = "sprung-mass"
+    axle_hop_hz: float = 15.0
+    unsprung_fraction: float = 0.15
     speed_mph: float = 41.0
     road: str = "iso-class"
     iso_class: str = "B"
@@ -157,6 +213,29 @@ class Scenario:
         check.damping_ratio("bridge_damping", self.bridge_damping)
         check.damping_ratio("truck_damping", self.truck_damping)
         check.n_spans(self.n_spans)
+        if self.vehicle_type not in VEHICLE_TYPES:
+            raise ValueError(
+                f"vehicle_type={self.vehicle_type!r} is not offered; use one of "
+                f"{', '.join(VEHICLE_TYPES)}"
+            )
+        check_range("vehicle_frequency", self.axle_hop_hz, "axle_hop_hz", warn=False)
+        if not 0.0 < self.unsprung_fraction <= MAX_UNSPRUNG_FRACTION:
+            raise ValueError(
+                f"unsprung_fraction={self.unsprung_fraction!r} must be above 0 and at most "
+                f"{MAX_UNSPRUNG_FRACTION:g} (the axles and wheels weigh about a tenth of a "
+                "loaded truck); give the share of the weight below the suspension"
+            )
+        if self.vehicle_type == "quarter-car":
+            lowest = self.lowest_axle_hop_hz
+            if self.axle_hop_hz <= lowest:
+                raise ValueError(
+                    f"axle_hop_hz={self.axle_hop_hz:g} must be above {lowest:.3g} Hz for a "
+                    f"quarter car whose body bounces at {self.truck_frequency_hz:g} Hz "
+                    f"(truck_frequency_hz) with unsprung_fraction={self.unsprung_fraction:g}: "
+                    "below it the tyre's stiffness k_t = m_u (2 pi f_hop)^2 - k_s is not "
+                    "positive; raise axle_hop_hz or unsprung_fraction, or lower the body's "
+                    "frequency"
+                )
         if self.road not in ROADS:
             raise ValueError(f"road={self.road!r} is not offered; use one of {', '.join(ROADS)}")
         if self.iso_class not in ISO_CLASS_MEANS:
@@ -186,10 +265,62 @@ class Scenario:
             self.span_ft * u.ft, self.n_spans, mass, self.bridge_frequency_hz, self.bridge_damping
         )
 
-    def vehicle(self) -> Vehicle:
-        """The sprung mass [SI] (85): mass = weight / g, undamped bounce frequency, damping."""
+    def vehicle(self) -> Vehicle | QuarterCar:
+        """The truck [SI]: a :class:`~vbi_lib.Vehicle` or a :class:`~vbi_lib.QuarterCar`.
+
+        ``"sprung-mass"``: the study's sprung mass (85), mass = weight / g, undamped bounce
+        frequency ``truck_frequency_hz``, damping ratio ``truck_damping``.
+        ``"quarter-car"``: :meth:`~vbi_lib.QuarterCar.from_frequencies` with sprung mass
+        ``(1 - unsprung_fraction)`` and unsprung mass ``unsprung_fraction`` times weight / g,
+        body ``truck_frequency_hz``, axle hop ``axle_hop_hz``, suspension damping ratio
+        ``truck_damping``, an undamped tyre (see the module docstring).
+
+        Raises
+        ------
+        ValueError
+            A mass outside :data:`vbi_lib.ranges.RANGES` (``vehicle_mass``,
+            ``unsprung_mass``).
+        """
         mass = self.truck_weight_kip * u.kip / u.g
-        return Vehicle.from_frequency(mass, self.truck_frequency_hz, self.truck_damping)
+        if self.vehicle_type == "sprung-mass":
+            return Vehicle.from_frequency(mass, self.truck_frequency_hz, self.truck_damping)
+        unsprung = self.unsprung_fraction * mass
+        return QuarterCar.from_frequencies(
+            mass - unsprung,
+            unsprung,
+            body_hz=self.truck_frequency_hz,
+            axle_hop_hz=self.axle_hop_hz,
+            suspension_damping_ratio=self.truck_damping,
+        )
+
+    @property
+    def lowest_axle_hop_hz(self) -> float:
+        """The axle-hop frequency [Hz] at which the quarter car's tyre stiffness would be 0.
+
+        ``truck_frequency_hz * sqrt(m_s / m_u)``: ``k_t = m_u (2 pi f_hop)^2 - k_s > 0``
+        needs a higher ``axle_hop_hz``.
+        """
+        ratio = (1.0 - self.unsprung_fraction) / self.unsprung_fraction
+        return self.truck_frequency_hz * math.sqrt(ratio)
+
+    def vehicle_text(self, vehicle: Vehicle | QuarterCar | None = None) -> str:
+        """The truck in words, for the explorer's readout (weights in display units).
+
+        ``vehicle`` is this scenario's :meth:`vehicle` if already built (not built again).
+        """
+        weight = display.fmt(self.truck_weight_kip * u.kip, "weight")
+        if self.vehicle_type == "sprung-mass":
+            return (
+                f"the study's sprung mass, {weight}, {self.truck_frequency_hz:.2f} Hz, "
+                f"damping {self.truck_damping:.0%} (contact assumed never to leave the road)"
+            )
+        frequencies = (vehicle or self.vehicle()).system.frequencies_hz
+        return (
+            f"quarter car, {weight} ({self.unsprung_fraction:.0%} unsprung), body "
+            f"{self.truck_frequency_hz:.2f} Hz on a rigid tyre, axle hop {self.axle_hop_hz:.1f} Hz"
+            f", suspension damping {self.truck_damping:.0%} (together they vibrate at "
+            f"{frequencies[0]:.2f} and {frequencies[1]:.1f} Hz); the tyre can leave the road"
+        )
 
     @property
     def speed(self) -> float:

@@ -15,6 +15,7 @@ import numpy as np
 from .. import display
 from .. import units as u
 from ..models import BatchResult
+from ..vehicles import as_system
 from .base import Explorer
 from .readouts import code_allowances, largest_daf, sweep_html
 from .scenario import Scenario
@@ -101,10 +102,11 @@ class SpeedExplorer(Explorer):
         scenario = self.scenario()
         profile = scenario.profile()
         bridge = scenario.bridge()
-        self._context = (scenario, bridge)
+        vehicle = scenario.vehicle()
+        self._context = (scenario, bridge, vehicle)
         return run_in_chunks(
             bridge,
-            scenario.vehicle(),
+            vehicle,
             profile,
             self.speeds(),
             scenario.bridge_start(profile),
@@ -117,7 +119,7 @@ class SpeedExplorer(Explorer):
         self._draw(result, None)
 
     def _draw(self, result: BatchResult, done: int | None) -> None:
-        scenario, bridge = self._context
+        scenario, bridge, vehicle = self._context
         speed_unit = display.value(1.0, "speed")  # display units per m/s
         v = result.speed * speed_unit
         lost = result.lost_contact
@@ -137,10 +139,10 @@ class SpeedExplorer(Explorer):
             # forcing frequency v / lambda; resonance where it meets f1 or the truck's frequency
             self._frequency_per_speed = 1.0 / (wavelength * speed_unit)
             self.frequency_axis.set_xlabel("forcing frequency v / wavelength [Hz]")
-            at = [
-                f * wavelength * speed_unit
-                for f in (bridge.first_frequency_hz, scenario.truck_frequency_hz)
-            ]
+            # the truck's lowest frequency on a rigid road: truck_frequency_hz for the sprung
+            # mass, the coupled body bounce for the quarter car (its tyre softens it)
+            truck_hz = float(as_system(vehicle).frequencies_hz[0])
+            at = [f * wavelength * speed_unit for f in (bridge.first_frequency_hz, truck_hz)]
         else:
             self._frequency_per_speed = 1.0 / (2.0 * bridge.span * speed_unit)
             self.frequency_axis.set_xlabel("load-passage frequency v / 2L [Hz]")
@@ -177,6 +179,7 @@ class SpeedExplorer(Explorer):
             lambda i: "at " + display.fmt(result.speed[i], "speed"),
             scenario.model_text(),
             done,
+            result.flight_fraction,
         )
 
     def _blank(self) -> None:

@@ -26,6 +26,7 @@ _FIELDS = (
     "peak_contact_position",
     "min_contact_force_ratio",
     "tension_fraction",
+    "flight_fraction",
     "dt",
 )
 
