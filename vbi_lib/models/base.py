@@ -203,6 +203,21 @@ class Batch:
                 float(self.bridge_start[i]), options)  # fmt: skip
 
 
+def broadcast(args: dict[str, Any], caller: str) -> tuple[int, dict[str, list]]:
+    """Repeat single values to the common length of the list arguments of a batch function."""
+    lengths = {k: len(v) for k, v in args.items() if isinstance(v, list | tuple | np.ndarray)}
+    if len(set(lengths.values())) > 1:
+        raise ValueError(f"list arguments must have one length; got {lengths}")
+    n = next(iter(lengths.values())) if lengths else 1
+    if n == 0:
+        raise ValueError(f"{caller} needs at least one crossing; got empty lists")
+    expanded = {
+        k: (list(v) if isinstance(v, list | tuple | np.ndarray) else [v] * n)
+        for k, v in args.items()
+    }
+    return n, expanded
+
+
 def parameters(
     vehicle: object, speed: float, bridge_start: float, span: float, extra: int = 0
 ) -> np.ndarray:
