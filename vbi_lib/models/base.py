@@ -12,8 +12,8 @@ static deflection its DAF divides by.  Everything else is here, written once:
   ``speed * dt`` are subdivided evenly; each step knows the span each axle is on (any
   number of spans).  The road under a tyre is the profile averaged over its footprint
   (:mod:`vbi_lib.vehicles.footprint`);
-* the checked inputs of a batch (:class:`Batch`) and what a model does with one
-  (:meth:`CrossingModel.integrate_many` and friends): the study's sprung mass on one or two
+* what a model does with a batch's checked inputs (:class:`~vbi_lib.models.batch.Batch`;
+  :meth:`CrossingModel.integrate_many` and friends): the study's sprung mass on one or two
   spans goes to the model's lane kernel (:mod:`~vbi_lib.models.lanes`), every other
   crossing to fallbacks that build one model and one grid per crossing;
 * the refinement of the midspan peaks inside a step (:func:`downward_peak`, from the cubic
@@ -34,7 +34,6 @@ from __future__ import annotations
 
 import math
 import weakref
-from dataclasses import dataclass
 from typing import Any, ClassVar
 
 import numba
@@ -46,9 +45,10 @@ from ..profiles import Profile
 from ..ranges import check_range, outside_note
 from ..units import g as GRAVITY
 from ..vehicles import Vehicle, VehicleSystem, as_system
+from .batch import PEAK_SLOTS, Batch
 from .grid import Grid, node_grid
 
-__all__ = ["Batch", "CrossingModel", "Grid", "check_crossing", "node_grid"]
+__all__ = ["CrossingModel", "Grid", "check_crossing", "node_grid"]
 
 #: ``omega * dt`` of the default time step.
 DEFAULT_OMEGA_DT = 0.1
@@ -60,7 +60,7 @@ P_COUNT = 7
 # summary vector of one crossing, filled by every kernel
 # (several axles: the contact forces are those of the worst axle, P_a / W_a times the weight)
 S_PEAK = 0  #: largest downward midspan deflection of span 1 (S_PEAK + 1: span 2) [m]
-PEAK_SLOTS = 2  #: spans whose peaks the summary keeps (the others: from the histories)
+# PEAK_SLOTS (from .batch): spans whose peaks the summary keeps (the others: from histories)
 S_MAX_FORCE = 2  #: largest contact force on the bridge [N]
 S_MAX_AT = 3  #: station where it occurs [m]
 S_MIN_FORCE = 4  #: smallest contact force on the bridge [N]
@@ -115,92 +115,6 @@ def check_crossing(
             "profile or move the bridge"
         )
     return speed, bridge_start
-
-
-@dataclass(frozen=True, eq=False)
-class Batch:
-    """The checked inputs of ``n`` crossings, one array entry per crossing.
-
-    Objects shared by crossings are stored once: crossing ``i`` has the bridge
-    ``bridges[bridge[i]]``, the vehicle ``vehicles[vehicle[i]]`` and the road
-    ``profiles[profile[i]]``.  ``modes[i]`` is the model's checked ``modes`` option, 0 for a
-    model that takes none.  Built by :func:`vbi_lib.simulate_many`.
-    """
-
-    bridges: tuple[Bridge, ...]
-    vehicles: tuple[Any, ...]
-    profiles: tuple[Profile, ...]
-    bridge: np.ndarray
-    vehicle: np.ndarray
-    profile: np.ndarray
-    speed: np.ndarray
-    bridge_start: np.ndarray
-    coupled: np.ndarray
-    convective: np.ndarray
-    modes: np.ndarray
-
-    def __len__(self) -> int:
-        return int(self.speed.size)
-
-    def column(self, objects: str, attribute: str) -> np.ndarray:
-        """An attribute of each crossing's bridge or vehicle, e.g. ``column("bridges", "span")``."""
-        values = np.array([getattr(obj, attribute) for obj in getattr(self, objects)])
-        return values[getattr(self, objects[:-1])]
-
-    @staticmethod
-    def groups(*keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Distinct rows of the key columns: one crossing of each, and each crossing's row.
-
-        Returns ``(first, inverse)``: ``first[k]`` is a crossing with the ``k``-th distinct
-        combination of keys, and crossing ``i`` has combination ``inverse[i]``.
-        """
-        order = np.lexsort(keys[::-1])
-        change = np.zeros(order.size, dtype=bool)
-        change[0] = True
-        for key in keys:
-            ordered = key[order]
-            change[1:] |= ordered[1:] != ordered[:-1]
-        label = np.cumsum(change) - 1
-        inverse = np.empty(order.size, np.int64)
-        inverse[order] = label
-        return order[change], inverse
-
-    def n_spans(self) -> np.ndarray:
-        """Each crossing's number of spans, ``(n,)``."""
-        return np.array([x.n_spans for x in self.bridges], dtype=np.int64)[self.bridge]
-
-    def lane_rows(self) -> np.ndarray:
-        """Which crossings the lane kernels take, ``(n,)`` booleans.
-
-        The study's sprung mass (:class:`~vbi_lib.Vehicle`) on a bridge whose peaks the
-        summary holds (:data:`PEAK_SLOTS` spans or fewer).
-        """
-        sprung = np.array([isinstance(v, Vehicle) for v in self.vehicles], dtype=bool)
-        return sprung[self.vehicle] & (self.n_spans() <= PEAK_SLOTS)
-
-    def take(self, rows: np.ndarray) -> Batch:
-        """The crossings ``rows`` (indices or a mask) as a batch of their own, holding only
-        the objects they use."""
-
-        def used(objects: tuple, codes: np.ndarray) -> tuple[tuple, np.ndarray]:
-            kept, inverse = np.unique(codes[rows], return_inverse=True)
-            return tuple(objects[k] for k in kept), inverse.astype(np.int64).ravel()
-
-        bridges, bridge = used(self.bridges, self.bridge)
-        vehicles, vehicle = used(self.vehicles, self.vehicle)
-        profiles, profile = used(self.profiles, self.profile)
-        return Batch(bridges, vehicles, profiles, bridge, vehicle, profile, self.speed[rows],
-                     self.bridge_start[rows], self.coupled[rows], self.convective[rows],
-                     self.modes[rows])  # fmt: skip
-
-    def crossing(self, i: int) -> tuple[Bridge, Any, Profile, float, float, dict[str, Any]]:
-        """Crossing ``i``'s bridge, vehicle, road, speed, bridge start and model options."""
-        modes = int(self.modes[i]) if self.modes[i] else None
-        options = {"coupled": bool(self.coupled[i]), "convective": bool(self.convective[i]),
-                   "modes": modes}  # fmt: skip
-        return (self.bridges[self.bridge[i]], self.vehicles[self.vehicle[i]],
-                self.profiles[self.profile[i]], float(self.speed[i]),
-                float(self.bridge_start[i]), options)  # fmt: skip
 
 
 def broadcast(args: dict[str, Any], caller: str) -> tuple[int, dict[str, list]]:
@@ -507,7 +421,8 @@ class CrossingModel:
 
     # ------------------------------------------------------------------ batches
     #: The model's lane kernel, ``run(batch, dt) -> (summaries, dt_max)``, for the crossings
-    #: of :meth:`Batch.lane_rows`; ``None``: every crossing takes the fallbacks.
+    #: of :meth:`~vbi_lib.models.batch.Batch.lane_rows`; ``None``: every crossing takes the
+    #: fallbacks.
     lane_kernel: ClassVar[Any] = None
 
     @classmethod
@@ -558,9 +473,10 @@ class CrossingModel:
         """Summaries ``(n, SUMMARY_SIZE)`` and largest steps ``(n,)`` [s] of a batch.
 
         ``dt`` is each crossing's largest step [s].  The crossings of
-        :meth:`Batch.lane_rows` run on the model's :attr:`lane_kernel`; the others get one
-        model and one grid each and go to :meth:`integrate_setups`.  Bridges with more spans
-        than :data:`PEAK_SLOTS` are the driver's (one crossing at a time, with histories).
+        :meth:`~vbi_lib.models.batch.Batch.lane_rows` run on the model's :attr:`lane_kernel`;
+        the others get one model and one grid each and go to :meth:`integrate_setups`.  Bridges
+        with more spans than :data:`PEAK_SLOTS` are the driver's (one crossing at a time, with
+        histories).
         """
         n = len(batch)
         lanes = batch.lane_rows() if cls.lane_kernel is not None else np.zeros(n, dtype=bool)

@@ -30,7 +30,6 @@ from .base import (
     S_PEAK,
     S_TENSION_TIME,
     SUMMARY_SIZE,
-    Batch,
     CrossingModel,
     _uneven_spacing,
     check_crossing,
@@ -38,6 +37,7 @@ from .base import (
     input_notes,
     node_grid,
 )
+from .batch import Batch
 from .modal import Modal
 from .one_coordinate import OneCoordinate
 from .results import BatchResult, Crossing

@@ -406,7 +406,7 @@ def _run_serial(blocks, px, pe, roads, table, counts, designs, summaries, widest
 def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
     """Summaries ``(n, SUMMARY_SIZE)`` and largest steps ``(n,)`` [s] of a batch.
 
-    ``batch`` is a :class:`~vbi_lib.models.base.Batch` of the study's vehicles with
+    ``batch`` is a :class:`~vbi_lib.models.batch.Batch` of the study's vehicles with
     ``batch.modes`` the number of modes of each crossing; ``dt`` the largest step [s].
     """
     table = shared_table(batch, dt, T_COUNT)

@@ -264,7 +264,7 @@ def _run_serial(blocks, px, pe, roads, table, summaries, widest):
 def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
     """Summaries ``(n, SUMMARY_SIZE)`` and largest steps ``(n,)`` [s] of a batch.
 
-    ``batch`` is a :class:`~vbi_lib.models.base.Batch` of the study's vehicles; ``dt`` the
+    ``batch`` is a :class:`~vbi_lib.models.batch.Batch` of the study's vehicles; ``dt`` the
     largest step of each crossing [s].
     """
     table = shared_table(batch, dt, T_COUNT)

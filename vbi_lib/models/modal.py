@@ -74,7 +74,6 @@ from .base import (
     P_STIFFNESS,
     PEAK_SLOTS,
     SUMMARY_SIZE,
-    Batch,
     CrossingModel,
     Grid,
     downward_peak,
@@ -84,6 +83,7 @@ from .base import (
     track_contact,
     track_peak,
 )
+from .batch import Batch
 from .lanes_modal import run as run_lanes
 from .results import Crossing
 

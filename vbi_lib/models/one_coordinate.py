@@ -71,7 +71,6 @@ from .base import (
     P_STIFFNESS,
     PEAK_SLOTS,
     SUMMARY_SIZE,
-    Batch,
     CrossingModel,
     Grid,
     downward_peak,
@@ -80,6 +79,7 @@ from .base import (
     track_contact,
     track_peak,
 )
+from .batch import Batch
 from .lanes_one_coordinate import run as run_lanes
 from .one_coordinate_step import sprung_mass_omega, sprung_mass_time_steps
 from .results import Crossing

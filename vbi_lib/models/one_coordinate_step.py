@@ -29,7 +29,8 @@ import numpy as np
 
 from ..bridges import Bridge
 from ..vehicles import Vehicle
-from .base import DEFAULT_OMEGA_DT, Batch
+from .base import DEFAULT_OMEGA_DT
+from .batch import Batch
 
 #: Columns of a row of coefficients: the truck, the bridge's generalised coordinate, the
 #: speed and the span.
