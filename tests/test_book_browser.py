@@ -24,20 +24,14 @@ from typing import TYPE_CHECKING
 import pytest
 from conftest import ROOT, BookBuild
 
+from vbi_lib.reports import printing
+
 if TYPE_CHECKING:
     from playwright.sync_api import Page, Route
 
 CHROMIUM = Path("/usr/bin/chromium")
-CHROMIUM_ARGS = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-]
+#: The same switches as the reports' PDF printer: headless, no sandbox, nothing fetched.
+CHROMIUM_ARGS = list(printing.CHROMIUM_ARGS)
 SCREENSHOTS = ROOT / "_build" / "screenshots"
 WIDGET_VIEW = 'script[type="application/vnd.jupyter.widget-view+json"]'
 #: Text of elements that show source on purpose (code, listings) is not checked for raw TeX.

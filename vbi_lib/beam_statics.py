@@ -41,6 +41,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -50,6 +51,9 @@ from . import _validation as check
 from . import display
 from .closed_forms import BeamStatics
 from .continuous_beams import support_stations
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = ["EFFECTS", "StaticEnvelope", "continuous_statics", "envelope", "static_envelope"]
 
@@ -224,7 +228,7 @@ class StaticEnvelope:
                 )
         return pd.DataFrame(rows)
 
-    def plot(self, ax=None, effect: str = "moment"):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None, effect: str = "moment") -> Axes:
         """Plot the envelope of one effect against the section (display units)."""
         import matplotlib.pyplot as plt
 

@@ -147,8 +147,9 @@ def _unit(quantity: str, system: System | None = None) -> tuple[str, float]:
     return units[quantity]
 
 
-def value(si_value, quantity: str):  # noqa: ANN001, ANN201
-    """An SI value (a number or an array) in the display unit of ``quantity``."""
+def value(si_value: Any, quantity: str) -> Any:
+    """An SI value (a number or an array, any shape) in the display unit of ``quantity``
+    (the same type and shape back); ``ValueError`` for an unknown quantity."""
     return si_value / _unit(quantity)[1]
 
 

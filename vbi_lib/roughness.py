@@ -37,7 +37,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numba
 import numpy as np
@@ -47,6 +47,10 @@ import scipy.signal
 from . import _validation as check
 from .profiles import ISO_BAND, Profile
 from .ranges import RANGES, outside_note, warn_outside
+
+if TYPE_CHECKING:
+    import pandas as pd
+    from matplotlib.axes import Axes
 
 #: Golden quarter car, per unit sprung mass: k1 [1/s^2], k2 [1/s^2], c [1/s], mu [-].
 GOLDEN_CAR = {"k1": 653.0, "k2": 63.3, "c": 6.0, "mu": 0.15}
@@ -103,7 +107,7 @@ class ProfileSpectrum:
         """The fitted spectrum ``c10 (n / 0.1)^-w`` [m^3] at ``frequency`` [cycle/m]."""
         return self.c10 * (np.asarray(frequency) / 0.1) ** (-self.waviness)
 
-    def plot(self, ax=None, label: str | None = None):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None, label: str | None = None) -> Axes:
         """Log-log plot of the PSD, the band averages and the fitted line."""
         import matplotlib.pyplot as plt
 
@@ -349,7 +353,7 @@ class IriResult:
     def __len__(self) -> int:
         return int(self.segment_iri.size)
 
-    def to_dataframe(self):  # noqa: ANN201
+    def to_dataframe(self) -> pd.DataFrame:
         """One row per segment: ``start_m``, ``stop_m``, ``iri_m_per_km`` (index ``segment``)."""
         import pandas as pd
 
@@ -358,7 +362,7 @@ class IriResult:
         )
         return table.rename_axis("segment")
 
-    def plot(self, ax=None, label: str | None = None):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None, label: str | None = None) -> Axes:
         """Segment IRI as steps along the road, with the whole-road value dashed."""
         import matplotlib.pyplot as plt
 

@@ -38,7 +38,12 @@ True
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = [
     "STUDY_FIGURES",
@@ -58,7 +63,9 @@ _BEAM, _VEHICLE, _ROAD, _FORCE = "0.15", "C0", "0.45", "C3"
 
 
 # ---------------------------------------------------------------------------- the axes
-def _axes(ax, size: tuple[float, float], limits: tuple[float, float, float, float]):  # noqa: ANN001, ANN202
+def _axes(
+    ax: Axes | None, size: tuple[float, float], limits: tuple[float, float, float, float]
+) -> Axes:
     """The axes to draw on (a new figure of ``size`` inches when ``ax`` is None), cleared of
     ticks and frame, with equal scales on ``limits = (x0, x1, y0, y1)``."""
     import matplotlib.pyplot as plt
@@ -75,12 +82,12 @@ def _axes(ax, size: tuple[float, float], limits: tuple[float, float, float, floa
     return ax
 
 
-def _text(ax, x: float, y: float, text: str, **kw) -> None:  # noqa: ANN001, ANN003
+def _text(ax: Axes, x: float, y: float, text: str, **kw) -> None:  # noqa: ANN003
     ax.text(x, y, text, fontsize=kw.pop("fontsize", _FONT), **kw)
 
 
 # ---------------------------------------------------------------------------- parts
-def _spring(ax, x: float, y0: float, y1: float, width: float = 0.35, coils: int = 5) -> None:  # noqa: ANN001
+def _spring(ax: Axes, x: float, y0: float, y1: float, width: float = 0.35, coils: int = 5) -> None:
     """A vertical zigzag spring from ``(x, y0)`` up to ``(x, y1)``."""
     lead = 0.15 * (y1 - y0)
     ys = np.linspace(y0 + lead, y1 - lead, 2 * coils + 1)
@@ -90,7 +97,7 @@ def _spring(ax, x: float, y0: float, y1: float, width: float = 0.35, coils: int 
     ax.plot([x, *xs, x], [y0, *ys, y1], color="k", lw=_THIN, solid_joinstyle="miter")
 
 
-def _damper(ax, x: float, y0: float, y1: float, width: float = 0.35) -> None:  # noqa: ANN001
+def _damper(ax: Axes, x: float, y0: float, y1: float, width: float = 0.35) -> None:
     """A vertical dashpot from ``(x, y0)`` up to ``(x, y1)``: a cylinder and a piston."""
     h = y1 - y0
     bottom, top = y0 + 0.25 * h, y0 + 0.65 * h
@@ -102,7 +109,7 @@ def _damper(ax, x: float, y0: float, y1: float, width: float = 0.35) -> None:  #
     ax.plot([x, x], [piston, y1], color="k", lw=_THIN)
 
 
-def _suspension(ax, x: float, y0: float, y1: float, labels: tuple[str, str]) -> None:  # noqa: ANN001
+def _suspension(ax: Axes, x: float, y0: float, y1: float, labels: tuple[str, str]) -> None:
     """A spring (left) and a damper (right) in parallel between two levels, labelled."""
     gap = 0.45
     ax.plot([x - gap, x + gap], [y0, y0], color="k", lw=_THIN)
@@ -114,7 +121,9 @@ def _suspension(ax, x: float, y0: float, y1: float, labels: tuple[str, str]) -> 
     _text(ax, x + gap + 0.3, middle, labels[1], ha="left", va="center")
 
 
-def _mass(ax, x: float, y: float, w: float, h: float, label: str, color: str = _VEHICLE) -> None:  # noqa: ANN001
+def _mass(
+    ax: Axes, x: float, y: float, w: float, h: float, label: str, color: str = _VEHICLE
+) -> None:
     """A block of mass centred at ``x`` with its bottom at ``y``."""
     from matplotlib.patches import Rectangle
 
@@ -123,21 +132,21 @@ def _mass(ax, x: float, y: float, w: float, h: float, label: str, color: str = _
     _text(ax, x, y + h / 2, label, ha="center", va="center")
 
 
-def _wheel(ax, x: float, y: float, r: float = 0.22) -> None:  # noqa: ANN001
+def _wheel(ax: Axes, x: float, y: float, r: float = 0.22) -> None:
     """A wheel standing on ``(x, y)``."""
     from matplotlib.patches import Circle
 
     ax.add_patch(Circle((x, y + r), r, facecolor="white", edgecolor="k", lw=_THIN, zorder=3))
 
 
-def _ground(ax, x0: float, x1: float, y: float, ticks: float = 0.25) -> None:  # noqa: ANN001
+def _ground(ax: Axes, x0: float, x1: float, y: float, ticks: float = 0.25) -> None:
     """A fixed ground line with hatching below."""
     ax.plot([x0, x1], [y, y], color="k", lw=_THIN)
     for xt in np.arange(x0 + ticks / 2, x1, ticks):
         ax.plot([xt, xt - ticks], [y, y - ticks], color="k", lw=0.7 * _THIN)
 
 
-def _support(ax, x: float, y: float, roller: bool, size: float = 0.35) -> None:  # noqa: ANN001
+def _support(ax: Axes, x: float, y: float, roller: bool, size: float = 0.35) -> None:
     """A pin (or roller) support whose apex is at ``(x, y)``."""
     from matplotlib.patches import Circle, Polygon
 
@@ -162,7 +171,7 @@ def _support(ax, x: float, y: float, roller: bool, size: float = 0.35) -> None: 
 
 def _arrow(
     ax, start: tuple, end: tuple, color: str = "k", lw: float = _THIN, both: bool = False
-) -> None:  # noqa: ANN001, E501
+) -> None:
     style = "<|-|>" if both else "-|>"
     ax.annotate(
         "",
@@ -179,7 +188,7 @@ def _arrow(
     )
 
 
-def _dimension(ax, x0: float, x1: float, y: float, text: str) -> None:  # noqa: ANN001
+def _dimension(ax: Axes, x0: float, x1: float, y: float, text: str) -> None:
     """A dimension line between two stations, with ticks and its text below."""
     _arrow(ax, (x0, y), (x1, y), both=True, lw=0.8 * _THIN)
     for xe in (x0, x1):
@@ -192,7 +201,9 @@ def _bumps(x: np.ndarray, amplitude: float = 0.06) -> np.ndarray:
     return amplitude * (np.sin(2.3 * x) + 0.6 * np.sin(5.1 * x + 1.0) + 0.3 * np.sin(11.0 * x))
 
 
-def _beam(ax, x0: float, spans: int, span: float, y: float, sag: float, rough: bool = True) -> None:  # noqa: ANN001, E501
+def _beam(
+    ax: Axes, x0: float, spans: int, span: float, y: float, sag: float, rough: bool = True
+) -> None:
     """A beam of ``spans`` equal spans on supports at height ``y``: the undeformed axis dotted,
     the deflected shape ``sag * sin(pi (x - x0) / span)`` (positive up) drawn thick, with the
     road profile on top when ``rough``."""
@@ -206,7 +217,9 @@ def _beam(ax, x0: float, spans: int, span: float, y: float, sag: float, rough: b
         _support(ax, x0 + i * span, y - 0.05, roller=i > 0)
 
 
-def _vehicle(ax, x: float, road: float, speed: str | None = r"$v$", gap: float = 0.0) -> float:  # noqa: ANN001, E501
+def _vehicle(
+    ax: Axes, x: float, road: float, speed: str | None = r"$v$", gap: float = 0.0
+) -> float:
     """A sprung mass whose wheel stands ``gap`` above the road at ``(x, road)``, with its
     displacement ``u_v`` marked on the left and, unless ``speed`` is None, a speed arrow
     above; returns the height of the top of its block."""
@@ -226,7 +239,7 @@ def _vehicle(ax, x: float, road: float, speed: str | None = r"$v$", gap: float =
 
 
 def _displacement_arrow(
-    ax,  # noqa: ANN001
+    ax,
     x: float,
     y: float,
     text: str,
@@ -241,7 +254,7 @@ def _displacement_arrow(
 
 
 # ---------------------------------------------------------------------------- figures
-def combined_systems(ax=None):  # noqa: ANN001, ANN201
+def combined_systems(ax: Axes | None = None) -> Axes:
     r"""Figure 2.10.1: the vehicle and the bridge as one system.
 
     A truck (sprung mass :math:`m_v` on a suspension :math:`k_v, c_v`) drives at speed
@@ -285,7 +298,7 @@ def combined_systems(ax=None):  # noqa: ANN001, ANN201
     return ax
 
 
-def simplified_model(ax=None):  # noqa: ANN001, ANN201
+def simplified_model(ax: Axes | None = None) -> Axes:
     r"""Figure 2.13.1: the simplified two-degree-of-freedom model.
 
     The truck is one sprung mass (coordinate :math:`u_v`); the bridge is one generalised
@@ -331,7 +344,7 @@ def simplified_model(ax=None):  # noqa: ANN001, ANN201
     return ax
 
 
-def _span_model(ax, spans: int):  # noqa: ANN001, ANN202
+def _span_model(ax: Axes | None, spans: int) -> Axes:
     """The single- and two-span 2-DOF diagrams (Figures 2.13.2 and 2.13.3)."""
     span = 9.0 if spans == 1 else 6.0
     length = spans * span
@@ -358,7 +371,7 @@ def _span_model(ax, spans: int):  # noqa: ANN001, ANN202
     return ax
 
 
-def single_span_model(ax=None):  # noqa: ANN001, ANN201
+def single_span_model(ax: Axes | None = None) -> Axes:
     r"""Figure 2.13.2: the single-span 2-DOF model.
 
     A sprung mass (:math:`m_v`, :math:`k_v`, :math:`c_v`, displacement :math:`u_v`) at the
@@ -385,7 +398,7 @@ def single_span_model(ax=None):  # noqa: ANN001, ANN201
     return _span_model(ax, 1)
 
 
-def two_span_model(ax=None):  # noqa: ANN001, ANN201
+def two_span_model(ax: Axes | None = None) -> Axes:
     r"""Figure 2.13.3: the two-span 2-DOF model.
 
     As :func:`single_span_model` on two equal continuous spans: the shape function
@@ -410,7 +423,7 @@ def two_span_model(ax=None):  # noqa: ANN001, ANN201
     return _span_model(ax, 2)
 
 
-def decoupled_model(ax=None):  # noqa: ANN001, ANN201
+def decoupled_model(ax: Axes | None = None) -> Axes:
     r"""Figure 2.15.1: the decoupled model.
 
     Left, the truck drives over the profile :math:`\Delta(x)` as if the road were rigid;
@@ -461,7 +474,7 @@ def decoupled_model(ax=None):  # noqa: ANN001, ANN201
     return ax
 
 
-def coupled_model(ax=None):  # noqa: ANN001, ANN201
+def coupled_model(ax: Axes | None = None) -> Axes:
     r"""Figure 2.15.2: the coupled 2-DOF model.
 
     The truck rides the moving bridge: the wheel follows

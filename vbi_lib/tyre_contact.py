@@ -32,6 +32,7 @@ import dataclasses
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -41,6 +42,9 @@ from .models import simulate_many
 from .models.base import broadcast
 from .validity import ContactLossWarning
 from .vehicles import DEFAULT_FOOTPRINT, QuarterCar, Vehicle, VehicleSystem
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = ["IDEALISATIONS", "ContactComparison", "compare_contact", "contact_variants"]
 
@@ -231,7 +235,7 @@ class ContactComparison:
             }
         )
 
-    def plot(self, ax=None, kind: str = "daf"):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None, kind: str = "daf") -> Axes:
         """Scatter of DAFs, crossing by crossing.
 
         ``kind="daf"``: each other idealisation against the first (the bilateral contact),

@@ -26,19 +26,12 @@ import pytest
 from conftest import ROOT
 from explorer_cases import direct_crossing
 
+from vbi_lib.reports import printing
 from vbi_lib.widgets import Scenario
 
 CHROMIUM = Path("/usr/bin/chromium")
-CHROMIUM_ARGS = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-]
+#: The same switches as the reports' PDF printer: headless, no sandbox, nothing fetched.
+CHROMIUM_ARGS = list(printing.CHROMIUM_ARGS)
 #: Seconds a page may take to show the explorers (kernel start, compiled code loaded).
 LOAD_TIMEOUT = 180
 

@@ -20,6 +20,7 @@ the run from the modal coordinates by the mode-acceleration method
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -30,6 +31,9 @@ from ..bridges import Bridge
 from ..modes import BeamModes
 from ..vehicles import VehicleSystem, as_system
 from .sections import SectionResponse, check_method, section_history, static_counterpart
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = ["BatchResult", "Crossing"]
 
@@ -372,7 +376,9 @@ class Crossing:
                 columns[f"axle {a + 1} contact force / load [-]"] = ratios[:, a]
         return pd.DataFrame(columns)
 
-    def plot(self, ax=None, kind: str = "displacement", span: int | None = None):  # noqa: ANN001, ANN201
+    def plot(
+        self, ax: Axes | None = None, kind: str = "displacement", span: int | None = None
+    ) -> Axes:
         """Plot a history against the wheel position from the start of the bridge.
 
         Parameters
@@ -523,7 +529,7 @@ class BatchResult:
             }
         ).rename_axis("crossing")
 
-    def plot(self, ax=None, kind: str = "daf"):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None, kind: str = "daf") -> Axes:
         """Plot the DAF (``kind="daf"``) or the contact-force extremes (``"contact"``) by speed.
 
         Crossings that lost contact are marked with crosses.

@@ -42,6 +42,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -58,6 +59,9 @@ from ..beam_statics import (
 )
 from ..bridges import Bridge
 from ..modes import BeamModes
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = ["EFFECTS", "METHODS", "SectionResponse", "section_history", "static_counterpart"]
 
@@ -318,7 +322,7 @@ class SectionResponse:
                     rows.append(row)
         return pd.DataFrame(rows)
 
-    def plot(self, ax=None, effect: str = "moment"):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None, effect: str = "moment") -> Axes:
         """Plot one effect at every section against the first axle's position, with the
         static extremes as dashed lines (display units)."""
         import matplotlib.pyplot as plt

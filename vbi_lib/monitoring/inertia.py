@@ -26,10 +26,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from .. import _validation as check
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 #: Displacement coefficient of the first-mode inertia term, ``48 / pi^4`` (26).
 DISPLACEMENT_INERTIA_COEFFICIENT = 48.0 / math.pi**4
@@ -159,7 +163,7 @@ def extra_amplification_ratio(mode: int = 1) -> float:
     return 12.0 / (n**2 * math.pi**2)
 
 
-def plot_extra_amplification(max_ratio: float = 1.0, ax=None):  # noqa: ANN001, ANN201
+def plot_extra_amplification(max_ratio: float = 1.0, ax: Axes | None = None) -> Axes:
     """Figure 2.11.1: amplification added by the first mode's inertia against ``eta``.
 
     ``ax``: a matplotlib axes, or None for a new figure (7 x 3.2 in).  Returns the axes.

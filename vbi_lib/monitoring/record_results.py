@@ -10,9 +10,13 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 #: The three ways :func:`daf_from_record` estimates the quasi-static response.
 METHODS = ("filter", "influence-line", "crawl")
@@ -88,7 +92,7 @@ class RecordDAF:
         """The scalar fields (everything but the two signals) as a dict, for a table row."""
         return {name: getattr(self, name) for name in SUMMARY_FIELDS}
 
-    def plot(self, ax=None, scale: float = 1.0, unit: str = ""):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None, scale: float = 1.0, unit: str = "") -> Axes:
         """The record, its quasi-static estimate and the two peaks against time.
 
         ``scale`` multiplies the values and ``unit`` labels them (for example ``1e3`` and
@@ -230,7 +234,7 @@ class RecordDAFs:
         rows = [event.summary() for event in self.events]
         return pd.DataFrame(rows, columns=list(SUMMARY_FIELDS)).rename_axis("event")
 
-    def plot(self, ax=None, event: int | None = None, **kwargs):  # noqa: ANN001, ANN003, ANN201
+    def plot(self, ax: Axes | None = None, event: int | None = None, **kwargs) -> Axes:  # noqa: ANN003
         """Plot one event's record and quasi-static estimate, or the DAF of every event.
 
         With ``event=i`` (or a single event) :meth:`RecordDAF.plot` of that event (keywords

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
@@ -24,6 +25,9 @@ from ..profiles import Profile, iso8608_class
 from ..roughness import fit_iso8608, iri
 from ..validity import ContactLossWarning
 from .inputs import ReportInputs, sweep_speeds
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = [
     "Allowances",
@@ -80,7 +84,7 @@ class SpeedStudy:
         columns["contact lost"] = self.lost_contact
         return pd.DataFrame(columns)
 
-    def plot(self, ax=None, allowance: float | None = None):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None, allowance: float | None = None) -> Axes:
         """DAF against speed: coupled (solid), decoupled (dashed), lost contact crossed out."""
         import matplotlib.pyplot as plt
 
@@ -174,7 +178,7 @@ class PositionStudy:
             )
         return pd.DataFrame(rows)
 
-    def plot(self, ax=None):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None) -> Axes:
         """Largest DAF of the spans against the offset, one line per speed."""
         import matplotlib.pyplot as plt
 
@@ -247,7 +251,7 @@ class SpanRoughness:
             index=pd.Index(self.names, name="part"),
         )
 
-    def plot(self, ax=None, road: Profile | None = None):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None, road: Profile | None = None) -> Axes:
         """The deck profile (and the end of the approach), elevation against station."""
         import matplotlib.pyplot as plt
 
@@ -321,7 +325,7 @@ class Allowances:
         """One row per code: its design DAF."""
         return pd.DataFrame({"design DAF (1 + IM)": self.daf}).rename_axis("code")
 
-    def plot(self, ax=None):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None) -> Axes:
         """Horizontal bars of the design DAFs."""
         import matplotlib.pyplot as plt
 
@@ -364,7 +368,7 @@ class ReportAnalysis:
         """The DAF table at the requested speeds (:meth:`SpeedStudy.to_dataframe`)."""
         return self.requested.to_dataframe()
 
-    def plot(self, ax=None):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None) -> Axes:
         """DAF against speed with the AASHTO LRFD value (:meth:`SpeedStudy.plot`)."""
         return self.sweep.plot(ax, allowance=self.allowances.aashto_lrfd)
 

@@ -11,6 +11,7 @@ a button (it is hundreds of crossings) and fills in progressively.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import ipywidgets as w
 import numpy as np
@@ -23,6 +24,9 @@ from .base import Explorer
 from .readouts import largest_daf, sweep_html
 from .scenario import Scenario
 from .sweeps import run_in_chunks
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = ["FrequencyExplorer", "FrequencyMap"]
 
@@ -119,7 +123,7 @@ class FrequencyMap:
             }
         )
 
-    def plot(self, ax=None, colorbar: bool = True):  # noqa: ANN001, ANN201
+    def plot(self, ax: Axes | None = None, colorbar: bool = True) -> Axes:
         """Heat map of the larger span DAF; cells that lost contact are marked with crosses.
 
         Returns

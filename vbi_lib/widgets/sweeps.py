@@ -11,6 +11,7 @@ from __future__ import annotations
 import time
 import warnings
 from collections.abc import Callable, Sequence
+from dataclasses import fields
 
 import numpy as np
 
@@ -19,16 +20,8 @@ from ..validity import ContactLossWarning
 
 __all__ = ["run_in_chunks"]
 
-_FIELDS = (
-    "speed",
-    "daf",
-    "contact_force_amplification",
-    "peak_contact_position",
-    "min_contact_force_ratio",
-    "tension_fraction",
-    "flight_fraction",
-    "dt",
-)
+#: The per-crossing arrays of a batch result (all its fields but the model's name).
+_FIELDS = tuple(f.name for f in fields(BatchResult) if f.name != "model")
 
 #: Crossings per call of ``simulate_many``.
 CHUNK = 64
