@@ -40,7 +40,7 @@ import pandas as pd
 from . import _validation as check
 from .models import simulate_many
 from .models.base import broadcast
-from .validity import ContactLossWarning
+from .validity import ContactFlags, ContactLossWarning
 from .vehicles import DEFAULT_FOOTPRINT, QuarterCar, Vehicle, VehicleSystem
 
 if TYPE_CHECKING:
@@ -108,7 +108,7 @@ def contact_variants(
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
-class ContactComparison:
+class ContactComparison(ContactFlags):
     """The same crossings with three contacts and at several time steps.
 
     Arrays are ``(n_steps, n, 3)``: step factor, crossing, idealisation (the order of
@@ -141,16 +141,6 @@ class ContactComparison:
 
     def __len__(self) -> int:
         return int(self.daf.shape[1])
-
-    @property
-    def outside_validity(self) -> np.ndarray:
-        """A bilateral contact force became tensile: the run is outside the model's validity."""
-        return self.min_contact_force_ratio < 0.0
-
-    @property
-    def lost_contact(self) -> np.ndarray:
-        """The truck lost contact: tension (bilateral) or flight (lift-off, quarter car)."""
-        return self.outside_validity | (self.flight_fraction > 0.0)
 
     def summary(self) -> pd.DataFrame:
         """One row per idealisation and step: DAF statistics and how many lost contact.

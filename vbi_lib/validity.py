@@ -10,7 +10,10 @@ The ranges of validity of the inputs, and the checks that raise
 
 from __future__ import annotations
 
+import numpy as np
+
 __all__ = [
+    "ContactFlags",
     "ContactLossWarning",
     "FailedRowsWarning",
     "OutsideValidityWarning",
@@ -43,6 +46,34 @@ class OutsideValidityWarning(VbiWarning):
 
 class FailedRowsWarning(VbiWarning):
     """Some rows of a study failed; the others are kept and the ``error`` column says why."""
+
+
+class ContactFlags:
+    """The two loss-of-contact flags of a result, from its ``min_contact_force_ratio`` and
+    ``flight_fraction`` (one crossing: numbers; several: arrays of one shape).
+
+    Mixed into every result that carries those two fields, so that all of them mean the same.
+    """
+
+    min_contact_force_ratio: float | np.ndarray
+    flight_fraction: float | np.ndarray
+
+    @property
+    def outside_validity(self) -> bool | np.ndarray:
+        """A bilateral contact force became tensile on the bridge: the tyre would have pulled
+        the road down, the model's contact assumption failed and the DAF is no prediction
+        (a ``bool`` for one crossing, else an array shaped as ``min_contact_force_ratio``)."""
+        flag = np.asarray(self.min_contact_force_ratio) < 0.0
+        return flag if flag.ndim else bool(flag)
+
+    @property
+    def lost_contact(self) -> bool | np.ndarray:
+        """An axle lost contact on the bridge: tension (:attr:`outside_validity`) or a tyre's
+        flight (a quarter car's, modelled and so inside validity)."""
+        flag = (np.asarray(self.min_contact_force_ratio) < 0.0) | (
+            np.asarray(self.flight_fraction) > 0.0
+        )
+        return flag if flag.ndim else bool(flag)
 
 
 def contact_note(min_ratio: float, tension_fraction: float) -> str:

@@ -29,6 +29,7 @@ from .. import _validation as check
 from .. import display
 from ..bridges import Bridge
 from ..modes import BeamModes
+from ..validity import ContactFlags
 from ..vehicles import VehicleSystem, as_system
 from .sections import SectionResponse, check_method, section_history, static_counterpart
 
@@ -56,7 +57,7 @@ def _stations(x: object) -> np.ndarray:
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
-class Crossing:
+class Crossing(ContactFlags):
     """One crossing: time histories (SI, displacements positive up) and the DAF of each span.
 
     Attributes
@@ -211,16 +212,6 @@ class Crossing:
     def contact_force_amplification(self) -> float:
         """Largest contact force of an axle on the bridge over its static load [-]."""
         return float(self.axle_contact_force_ratio[self.axle_on_bridge].max())
-
-    @property
-    def lost_contact(self) -> bool:
-        """Whether an axle lost contact on the bridge: tension (bilateral) or flight (tyre)."""
-        return bool(self.min_contact_force_ratio < 0.0 or self.flight_fraction > 0.0)
-
-    @property
-    def outside_validity(self) -> bool:
-        """Whether a bilateral contact force became tensile: the model's assumption failed."""
-        return bool(self.min_contact_force_ratio < 0.0)
 
     # ------------------------------------------------------------------ sections
     def modal_history(self) -> tuple[BeamModes, np.ndarray]:
@@ -460,7 +451,7 @@ class Crossing:
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
-class BatchResult:
+class BatchResult(ContactFlags):
     """Summaries of many crossings (no time histories), one entry per crossing.
 
     Attributes
@@ -503,16 +494,6 @@ class BatchResult:
 
     def __len__(self) -> int:
         return int(self.speed.size)
-
-    @property
-    def outside_validity(self) -> np.ndarray:
-        """Whether each crossing's bilateral contact force became tensile, ``(n,)``."""
-        return self.min_contact_force_ratio < 0.0
-
-    @property
-    def lost_contact(self) -> np.ndarray:
-        """Whether an axle lost contact on the bridge (tension or a tyre's flight), ``(n,)``."""
-        return self.outside_validity | (self.flight_fraction > 0.0)
 
     def to_dataframe(self) -> pd.DataFrame:
         """One row per crossing: speed (display units), DAFs and the contact checks."""

@@ -20,6 +20,7 @@ import pandas as pd
 from .. import display
 from .. import units as u
 from ..models import BatchResult
+from ..validity import ContactFlags
 from .base import Explorer
 from .readouts import largest_daf, sweep_html
 from .scenario import Scenario
@@ -32,7 +33,7 @@ __all__ = ["FrequencyExplorer", "FrequencyMap"]
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
-class FrequencyMap:
+class FrequencyMap(ContactFlags):
     """DAF of one crossing per (speed, frequency ratio) cell.
 
     Attributes
@@ -89,17 +90,6 @@ class FrequencyMap:
     def truck_frequency_hz(self) -> np.ndarray:
         """Truck frequency of each column [Hz], ``(n_ratios,)``."""
         return self.ratio * self.bridge_frequency_hz
-
-    @property
-    def outside_validity(self) -> np.ndarray:
-        """Cells whose contact force became tensile on the bridge (the sprung mass's)."""
-        return self.min_contact_force_ratio < 0.0
-
-    @property
-    def lost_contact(self) -> np.ndarray:
-        """Cells that lost contact on the bridge: tension (outside validity) or a tyre's
-        flight (a quarter car's, modelled), as :attr:`vbi_lib.Crossing.lost_contact`."""
-        return self.outside_validity | (self.flight_fraction > 0.0)
 
     @property
     def largest_daf(self) -> np.ndarray:

@@ -19,7 +19,7 @@ a tyre under the axle (:meth:`~vbi_lib.QuarterCar.from_frequencies`):
 with ``f_body = truck_frequency_hz`` (the body on its suspension, the tyre held rigid),
 ``f_hop = axle_hop_hz`` (the axle between suspension and tyre, the body held still) and
 ``zeta = truck_damping``; the tyre is undamped and touches the road over
-:data:`~vbi_lib.vehicles.DEFAULT_FOOTPRINT` (0.25 m).  The tyre must be a spring,
+:data:`~vbi_lib.vehicles.footprint.DEFAULT_FOOTPRINT` (0.25 m).  The tyre must be a spring,
 ``k_t > 0``, so ``axle_hop_hz`` must exceed ``truck_frequency_hz * sqrt(m_s / m_u)``.
 
 The road is one of :data:`ROADS`.  Generated roads start at station 0 (where the truck starts,
