@@ -117,7 +117,7 @@ def exp_parts(x):
     """``exp(x)`` as ``(p, n)`` with ``exp(x) = p * 2**n``, without branches.
 
     ``x`` is clamped to [-708, 709] (the normal range); ``n = round(x / ln 2)``, and ``p`` is
-    the Taylor polynomial of the reduced argument (|r| <= ln 2 / 2, truncation below 1e-17).
+    the Taylor polynomial of the reduced argument (``|r| <= ln 2 / 2``, truncation below 1e-17).
     The caller makes ``2**n`` from :func:`power_of_two_bits` in a separate loop, so that
     both loops stay packed.
     """

@@ -56,7 +56,7 @@ T_COUNT = T_SHARED + 6
 M_KAPPA, M_TWO_ZW, M_W2, M_MID1, M_MID2, M_COEF = range(6)
 M_EXP = M_COEF + 8
 M_COUNT = M_EXP + 1
-#: Exponential parts with ``|c|, |d|`` at most this times ``max |a|, |b|`` of their span are
+#: Exponential parts with ``|c|, |d|`` at most this times ``max(|a|, |b|)`` of their span are
 #: left out (the sine modes of a simply supported span carry ``c, d`` of rounding size only);
 #: exp(-ks) <= 1, so the shape changes by at most this fraction of its amplitude.
 EXP_NEGLIGIBLE = 1e-14
