@@ -48,7 +48,7 @@ def test_the_quarter_car_is_the_one_its_formulas_give_and_weighs_the_truck() -> 
                  "tyre_stiffness", "tyre_damping", "footprint", "unilateral"):  # fmt: skip
         assert getattr(car, name) == pytest.approx(getattr(expected, name), rel=1e-12), name
     assert car.weight == pytest.approx(77.2 * u.kip)  # the truck's weight, all of it
-    assert car.unsprung_mass * u.g == pytest.approx(0.15 * 77.2 * u.kip)
+    assert car.unsprung_mass * u.g == pytest.approx(0.1 * 77.2 * u.kip)
     assert isinstance(Scenario().vehicle(), vbi.Vehicle)  # the study's, by default
 
 
@@ -59,8 +59,8 @@ def test_the_readout_names_the_quarter_car_and_its_coupled_frequencies() -> None
         car.sprung_mass, car.unsprung_mass, car.suspension_stiffness, car.tyre_stiffness
     )
     text = explorer.readout.value
-    assert "quarter car" in text and "15% unsprung" in text
-    assert "body 3.50 Hz on a rigid tyre, axle hop 15.0 Hz" in text
+    assert "quarter car" in text and "10% unsprung" in text
+    assert "body 3.50 Hz on a rigid tyre, axle hop 20.0 Hz" in text
     assert f"vibrate at {low:.2f} and {high:.1f} Hz" in text
     explorer.controls["vehicle_type"].value = "sprung-mass"
     text = explorer.readout.value

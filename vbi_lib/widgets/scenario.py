@@ -127,9 +127,11 @@ class Scenario:
         :data:`vbi_lib.ranges.RANGES` ``vehicle_frequency``: refused outside 0.05 to 1000 Hz,
         intended 0.5 to 50 Hz; trucks hop at 8 to 15 Hz) and the share of the weight below
         the suspension, ``0 < unsprung_fraction <=`` :data:`MAX_UNSPRUNG_FRACTION` (0.1 to
-        0.2 for a truck).  Defaults 15 Hz and 0.15: with the study's 3.5 Hz body the tyre is
-        then about twice as stiff as the suspension, and the frequency map's bodies up to
-        twice a 3 Hz bridge's frequency can still be built.  Unused for the sprung mass.
+        0.2 for a truck).  Defaults 20 Hz and 0.1: with the study's 3.5 Hz body the tyre is
+        then about 2.6 times as stiff as the suspension, the unsprung mass of the study's
+        35 t truck (3.5 t) stays inside its intended range, and the frequency map's bodies
+        up to twice a 3 Hz bridge's frequency can still be built (they need more than
+        18 Hz).  Unused for the sprung mass.
     speed_mph
         Truck speed [mph].
     road
@@ -174,8 +176,8 @@ class Scenario:
     truck_frequency_hz: float = 3.5
     truck_damping: float = 0.10
     vehicle_type: str = "sprung-mass"
-    axle_hop_hz: float = 15.0
-    unsprung_fraction: float = 0.15
+    axle_hop_hz: float = 20.0
+    unsprung_fraction: float = 0.1
     speed_mph: float = 41.0
     road: str = "iso-class"
     iso_class: str = "B"
