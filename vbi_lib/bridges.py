@@ -257,12 +257,12 @@ class Bridge:
         return cls(span, n_spans, EI, mass_per_length, damping_ratio)
 
     # ------------------------------------------------------------------ layout
-    @property
+    @cached_property
     def equal_spans(self) -> bool:
-        """Whether every span has the same length."""
+        """Whether every span has the same length (computed once per bridge)."""
         return all(length == self.span for length in self.spans)
 
-    @property
+    @cached_property
     def study_layout(self) -> bool:
         """True for the study's beams, one span or two equal spans, where its formulas hold."""
         return self.n_spans <= 2 and self.equal_spans
