@@ -184,6 +184,51 @@ def next_trial(lo, glo, hi, ghi):
     return t
 
 
+#: What :func:`locate_switch` tells the kernel to do with its trial step.
+RETRY, ACCEPT, ACCEPT_STEP = 0, 1, 2
+
+
+@numba.njit(cache=True, inline="always")
+def locate_switch(phase, axle, tries, switches, lo, glo, hi, ghi, side, th0, target,
+                  start_gap, end_gap, unilateral, n_axles):  # fmt: skip
+    """One decision of the event location, after a trial from ``th0`` to ``target``.
+
+    Both general kernels share it.  Phase 0 stepped to the step's end; if a tyre's force
+    changed sign there (``end_gap < 0``), phase 1 brackets that axle's switch with Illinois
+    trials from ``th0``, and phase 2 takes the step to the located switch (any earlier
+    switch of another axle restarts the search).  Returns ``(action, phase, axle, tries, lo,
+    glo, hi, ghi, side, target)``: ``RETRY`` (integrate again from ``th0`` to ``target``),
+    ``ACCEPT`` (keep the trial: a switch is reached) or ``ACCEPT_STEP`` (keep it: the
+    step is done with no switch).
+    """
+    if phase == 1:
+        tries += 1
+        gt = end_gap[axle]
+        if gt == 0.0:
+            hi = target
+        else:
+            lo, glo, hi, ghi, side = illinois_step(lo, glo, hi, ghi, target, gt, side)
+        if gt == 0.0 or hi - lo <= EVENT_TOLERANCE or tries >= 200:
+            phase = 2
+            target = hi
+        else:
+            target = next_trial(lo, glo, hi, ghi)
+        return RETRY, phase, axle, tries, lo, glo, hi, ghi, side, target
+    found = -1
+    if switches < MAX_EVENTS and target > th0:
+        for a in range(n_axles):
+            if found < 0 and unilateral[a] and a != axle and end_gap[a] < 0.0:
+                found = a
+    if found >= 0:
+        axle = found
+        lo, glo, hi, ghi, side, tries = th0, start_gap[axle], target, end_gap[axle], 0, 0
+        phase = 2 if glo <= 0.0 else 1
+        target = th0 if glo <= 0.0 else next_trial(lo, glo, hi, ghi)
+        return RETRY, phase, axle, tries, lo, glo, hi, ghi, side, target
+    action = ACCEPT_STEP if phase == 0 else ACCEPT
+    return action, phase, axle, tries, lo, glo, hi, ghi, side, target
+
+
 @numba.njit(cache=True)
 def solve_in_place(a, b, m, cols):
     """Solve the leading ``m x m`` block of ``a`` against ``b[:m, :cols]`` in place.

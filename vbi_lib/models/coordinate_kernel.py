@@ -26,11 +26,10 @@ import numba
 import numpy as np
 
 from .axles import (
-    EVENT_TOLERANCE,
-    MAX_EVENTS,
-    illinois_step,
+    ACCEPT_STEP,
+    RETRY,
+    locate_switch,
     log_event,
-    next_trial,
     occupied,
     track_axles,
     track_flight,
@@ -256,33 +255,12 @@ def kernel(x, road, axle_span, params, n_spans, coupled, convective, vec, n, n_a
                 if unilateral[a]:
                     p = W[a] + dynamic(a, trial)  # the inputs are at the target already
                     end_gap[a] = -p if flying[a] else p
-            done = False
-            if phase == 1:
-                tries += 1
-                gt = end_gap[axle]
-                if gt == 0.0:
-                    hi = target
-                else:
-                    lo, glo, hi, ghi, side = illinois_step(lo, glo, hi, ghi, target, gt, side)
-                if gt == 0.0 or hi - lo <= EVENT_TOLERANCE or tries >= 200:
-                    phase = 2
-                    target = hi
-                else:
-                    target = next_trial(lo, glo, hi, ghi)
+            action, phase, axle, tries, lo, glo, hi, ghi, side, target = locate_switch(
+                phase, axle, tries, switches, lo, glo, hi, ghi, side, th0, target,
+                start_gap, end_gap, unilateral, n_axles)  # fmt: skip
+            if action == RETRY:
                 continue
-            # phase 0: any switch in the step?  phase 2: any switch before the located one?
-            found = -1
-            if switches < MAX_EVENTS and target > th0:
-                for a in range(n_axles):
-                    if found < 0 and unilateral[a] and a != axle and end_gap[a] < 0.0:
-                        found = a
-            if found >= 0:
-                axle = found
-                lo, glo, hi, ghi, side, tries = th0, start_gap[axle], target, end_gap[axle], 0, 0
-                phase = 2 if glo <= 0.0 else 1
-                target = th0 if glo <= 0.0 else next_trial(lo, glo, hi, ghi)
-                continue
-            done = phase == 0
+            done = action == ACCEPT_STEP
             peaks(y, trial, h * (target - th0))
             track_flight(summary, flying, axle_span, k, h * (target - th0))
             for i in range(m):
