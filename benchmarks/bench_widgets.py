@@ -31,6 +31,8 @@ from pathlib import Path
 
 from _timing import median_time, report
 
+from vbi_lib.reports.printing import CHROMIUM_ARGS
+
 ROOT = Path(__file__).resolve().parents[1]
 CHROMIUM = Path("/usr/bin/chromium")
 PRESSES = 30
@@ -150,18 +152,10 @@ def in_browser() -> float | None:
                 break
             except OSError:
                 time.sleep(0.2)
-        args = [
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--disable-quic",
-            "--no-first-run",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--disable-sync",
-        ]
         with sync_playwright() as playwright:
-            browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=args)
+            browser = playwright.chromium.launch(
+                executable_path=str(CHROMIUM), args=list(CHROMIUM_ARGS)
+            )
             page = browser.new_page()
             page.goto(url, timeout=300_000)
             page.wait_for_function(
