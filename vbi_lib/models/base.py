@@ -97,9 +97,10 @@ def check_crossing(
     bridge_start = check.finite("bridge_start", bridge_start)
     end = bridge_start + bridge.length
     if bridge_start < profile.start or end > profile.end + 1e-9 * max(1.0, abs(end)):
+        first = min(profile.start, bridge_start)
         raise ValueError(
             f"the profile (stations {profile.start:g} to {profile.end:g} m) does not cover the "
-            f"approach and the bridge (stations {profile.start:g} to {end:g} m with "
+            f"approach and the bridge (stations {first:g} to {end:g} m with "
             f"bridge_start={bridge_start:g} m); extend the profile or move the bridge"
         )
     tolerance = 1e-9 * max(1.0, abs(end) + wheelbase)

@@ -98,6 +98,8 @@ class Explorer:
         self._fresh_notice = False
         self._control_note: str | None = None  # a control's sentence in this change
         self._outside_said = False  # the note line shows inputs outside their ranges
+        #: The last result's inputs outside their intended ranges, one sentence each.
+        self.outside_inputs: list[str] = []
         self._uploads = tempfile.TemporaryDirectory(prefix="vbi-profiles-")
         self.upload = w.FileUpload(
             accept=".csv,.txt,.dat,.prn", multiple=False, description="upload profile"
@@ -194,6 +196,7 @@ class Explorer:
                 outside.append(str(item.message))
             else:  # not ours to handle: pass it on
                 warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
+        self.outside_inputs = outside
         self._say_outside(outside)
         self._show(result)
         return result
@@ -210,7 +213,7 @@ class Explorer:
         control, self._control_note = self._control_note, None
         if outside:
             sentences = ([control] if control else []) + list(dict.fromkeys(outside))
-            self.notice.value = notice_html(" ".join(sentences))
+            self.notice.value = notice_html(" ".join(_sentence(s) for s in sentences))
             self._outside_said = True
         elif self._outside_said:
             self._outside_said = False
@@ -262,3 +265,9 @@ class Explorer:
             if title == "Road" and "profile_path" in self.controls:
                 rows.insert(rows.index(self.controls["profile_path"]) + 1, self.upload)
         return w.VBox(rows, layout=w.Layout(min_width="28em"))
+
+
+def _sentence(text: str) -> str:
+    """``text`` ending with a full stop, so that sentences joined on the note line read."""
+    text = text.strip()
+    return text if text.endswith((".", "!", "?")) else text + "."

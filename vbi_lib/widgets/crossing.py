@@ -119,6 +119,7 @@ class CrossingExplorer(Explorer):
             scenario.road_text(),
             scenario.model_text(),
             scenario.vehicle_text(crossing.vehicle),
+            outside=bool(self.outside_inputs),
         )
 
     def _blank(self) -> None:

@@ -305,6 +305,7 @@ class FrequencyExplorer(Explorer):
             scenario.model_text(),
             done,
             result.flight_fraction.ravel(),
+            outside=bool(self.outside_inputs),
         )
 
     def _resonances(self, scenario: Scenario, bridge: object, result: FrequencyMap) -> None:

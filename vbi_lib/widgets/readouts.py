@@ -53,8 +53,11 @@ def code_allowances(bridge: Bridge) -> dict[str, float]:
 
 
 def daf_text(dafs: Sequence[float]) -> str:
-    """``"DAF 1.087"`` for one span, one value per span otherwise (NaN spans left out)."""
+    """``"DAF 1.087"`` for one span, one value per span otherwise (NaN spans left out; none
+    finite: says that no span was pushed down)."""
     values = [float(d) for d in dafs if np.isfinite(d)]
+    if not values:
+        return "no DAF (no span was pushed down during the crossing)"
     if len(values) == 1:
         return f"DAF {values[0]:.3f}"
     return "DAF " + ", ".join(f"{d:.3f} (span {j + 1})" for j, d in enumerate(values))
@@ -63,6 +66,13 @@ def daf_text(dafs: Sequence[float]) -> str:
 def _codes(bridge: Bridge) -> str:
     codes = ", ".join(f"{name} {value:.2f}" for name, value in code_allowances(bridge).items())
     return f"design codes' DAF: {codes}"
+
+
+#: The readout's line when an input is outside its intended range (the note line says which).
+OUTSIDE = (
+    f'<span style="{_BAD}"><b>inputs outside their intended ranges</b> (the note below '
+    "says which): these results are outside the model's validity</span>"
+)
 
 
 def _contact(min_ratio: float, tension: float) -> str:
@@ -98,8 +108,13 @@ def _wheel(min_ratio: float, flight: float) -> str:
     )
 
 
-def crossing_html(crossing: Crossing, road: str, model: str, vehicle: str) -> str:
+def crossing_html(
+    crossing: Crossing, road: str, model: str, vehicle: str, outside: bool = False
+) -> str:
     """The readout of one crossing: DAF and contact, codes, inputs and the model that ran.
+
+    ``outside``: an input is outside its intended range, which the readout then says
+    under the DAF (the explorer's note line names the input).
 
     ``road``, ``model`` and ``vehicle`` describe the inputs in words
     (:meth:`~vbi_lib.widgets.Scenario.road_text` and its siblings).  Whether the contact
@@ -117,6 +132,7 @@ def crossing_html(crossing: Crossing, road: str, model: str, vehicle: str) -> st
         )
     lines = [
         f"<b>{daf_text(crossing.daf)}</b> &mdash; {contact}",
+        *([OUTSIDE] if outside else []),
         f"largest contact force {crossing.contact_force_amplification:.2f} &times; the weight; "
         + _codes(bridge),
         f"bridge {display.fmt(bridge.span, 'length')} &times; {bridge.n_spans}, "
@@ -136,6 +152,7 @@ def sweep_html(
     model: str,
     done: int | None = None,
     flight_fraction: np.ndarray | None = None,
+    outside: bool = False,
 ) -> str:
     """The readout of a sweep: the largest valid DAF, how many lost contact, how many flew.
 
@@ -155,20 +172,39 @@ def sweep_html(
     flight_fraction
         ``(n,)`` fraction of the time on the bridge a tyre was off the road (a quarter car's
         modelled flights: their DAFs stay valid); ``None``: no tyre could leave the road.
+    outside
+        An input is outside its intended range: no DAF is then called valid, and the
+        readout says why.
+
+    A computed crossing with no finite DAF (no span pushed down: a wheel that flew over
+    the bridge) is counted and said, not taken for one still to compute.
     """
     daf = largest_daf(np.asarray(daf))
-    computed = np.isfinite(daf)
-    lost = computed & (np.asarray(min_contact_force_ratio) < 0.0)
-    kept = computed & ~lost
+    ratio = np.asarray(min_contact_force_ratio, dtype=float)
+    computed = np.isfinite(ratio)  # every computed crossing has a smallest contact force
+    no_daf = computed & ~np.isfinite(daf)
+    lost = computed & (ratio < 0.0)
     flight = np.zeros(daf.shape) if flight_fraction is None else np.asarray(flight_fraction)
-    flew = kept & (flight > 0.0)
+    flew = computed & ~lost & (flight > 0.0)
+    kept = computed & ~lost & ~no_daf
     parts = []
     if done is not None:
         parts.append(f"<i>computing: {done} of {daf.size} crossings done&hellip;</i>")
     if kept.any():
         best = int(np.flatnonzero(kept)[np.argmax(daf[kept])])
-        among = "within the model's validity" if flew.any() else "that kept contact"
+        if outside:
+            among = "that kept contact or flew (modelled)" if flew.any() else "that kept contact"
+        else:
+            among = "within the model's validity" if flew.any() else "that kept contact"
         parts.append(f"<b>largest DAF {daf[best]:.3f}</b> {what(best)}, among crossings {among}")
+    if outside:
+        parts.append(OUTSIDE)
+    if no_daf.any():
+        parts.append(
+            f'<span style="{_WARN}"><b>{int(no_daf.sum())} of {int(computed.sum())} crossings '
+            "have no DAF</b>: no span was pushed down while the truck was on it (a wheel "
+            "that flew over the bridge)</span>"
+        )
     if flew.any():
         longest = int(np.flatnonzero(flew)[np.argmax(flight[flew])])
         parts.append(

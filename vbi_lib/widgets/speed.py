@@ -180,6 +180,7 @@ class SpeedExplorer(Explorer):
             scenario.model_text(),
             done,
             result.flight_fraction,
+            outside=bool(self.outside_inputs),
         )
 
     def _blank(self) -> None:
