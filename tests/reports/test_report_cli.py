@@ -74,6 +74,8 @@ def refused(argv: list[str], capsys: pytest.CaptureFixture, folder: Path) -> str
         (GOOD.replace("[50 km/h, 80 km/h]", "[50; 80 km/h]"), "speeds[0]='50; 80 km/h' holds"),
         (GOOD.replace("[50 km/h, 80 km/h]", "[nan km/h]"), "speeds[0]='nan km/h' is not a finite"),
         (GOOD.replace("quick: true", "quick: 'true'"), "quick='true' must be a YAML boolean"),
+        (GOOD.replace("quick: true", "quick: yes"), "quick='yes' must be a YAML boolean"),
+        (GOOD.replace("quick: true", "quick: off"), "quick='off' must be a YAML boolean"),
         (GOOD.replace("seed: 3", "seed: '3'"), "profile.seed='3' must be a whole number"),
         (GOOD.replace("vehicle:", "vehicel:"), "vehicel={'mass'"),
         (GOOD + "title: again\n", "bad.yaml, line 7, column 1: not valid YAML (key 'title' is "

@@ -21,6 +21,7 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import os
+import re
 import shutil
 import signal
 import tempfile
@@ -137,7 +138,20 @@ class ReportJob:
 
 
 class _UniqueKeyLoader(yaml.SafeLoader):
-    """YAML's safe loader that refuses a key given twice in one mapping."""
+    """YAML's safe loader that refuses a key given twice in one mapping, and reads only
+    ``true`` and ``false`` as booleans (YAML 1.2): YAML 1.1's ``yes``, ``no``, ``on`` and
+    ``off`` stay text, which a boolean parameter then refuses by name."""
+
+
+# YAML 1.1 resolves yes/no/on/off to booleans; keep every other implicit type of the safe
+# loader and give booleans YAML 1.2's spelling only
+_UniqueKeyLoader.yaml_implicit_resolvers = {
+    first: [(tag, regexp) for tag, regexp in resolvers if tag != "tag:yaml.org,2002:bool"]
+    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
+}
+_UniqueKeyLoader.add_implicit_resolver(
+    "tag:yaml.org,2002:bool", re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"), list("tTfF")
+)
 
 
 def _mapping(loader: _UniqueKeyLoader, node: yaml.MappingNode) -> dict:
