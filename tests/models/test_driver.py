@@ -241,3 +241,18 @@ def test_a_batch_checks_steps_and_ranges_as_simulate_does() -> None:
     assert len(messages) == 1, messages
     assert messages[0].startswith(f"{len(expected)} of 4 crossings have inputs outside")
     assert f"(crossing {expected[0]}: " in messages[0]
+
+
+def test_a_batch_takes_a_pandas_series_and_refuses_unordered_iterables() -> None:
+    import pandas as pd
+
+    bridge = vbi.Bridge(30.0, 1, 2e10, 8000.0)
+    truck = vbi.Vehicle.from_frequency(3e4, 3.0, 0.1)
+    road = vbi.Profile.flat(200.0, 0.05)
+    batch = vbi.simulate_many(bridge, truck, road, pd.Series([20.0, 30.0]), 50.0)
+    for i, speed in enumerate((20.0, 30.0)):  # the reference: one crossing at a time
+        single = vbi.simulate(bridge, truck, road, speed, 50.0).daf[0]
+        assert batch.daf[i, 0] == pytest.approx(single, rel=1e-10)
+    for bad in ({20.0, 30.0}, (s for s in (20.0, 30.0))):
+        with pytest.raises(TypeError, match=r"speeds must be one value or a list"):
+            vbi.simulate_many(bridge, truck, road, bad, 50.0)

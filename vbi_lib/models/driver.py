@@ -257,6 +257,22 @@ def _is_list(value: object) -> bool:
     return isinstance(value, list | tuple | np.ndarray)
 
 
+def _as_list(name: str, value: object) -> object:
+    """A pandas Series or Index as its array; other iterables that are not a list, tuple or
+    array (a set, a generator, a dict) refused by name: they have no order to trust."""
+    if _is_list(value):
+        return value
+    to_numpy = getattr(value, "to_numpy", None)
+    if callable(to_numpy) and hasattr(value, "__len__"):
+        return to_numpy()
+    if isinstance(value, set | frozenset | dict) or hasattr(value, "__next__"):
+        raise TypeError(
+            f"{name} must be one value or a list, tuple or array of them, not a "
+            f"{type(value).__name__}; pass list({name}) or a numpy array"
+        )
+    return value
+
+
 def _factorize(values: object, n: int) -> tuple[np.ndarray, tuple]:
     """Codes and the distinct objects (by identity) of a list, or of one repeated value."""
     if not _is_list(values):
@@ -515,6 +531,7 @@ def simulate_many(
         "convective": convective,
         "modes": modes,
     }
+    args = {name: _as_list(name, value) for name, value in args.items()}
     if dt is not None:
         dt = check.positive("dt", dt)
     batch = _batch(kind, args)
