@@ -192,10 +192,16 @@ def _children(process: subprocess.Popen, word: str, seconds: float) -> list[psut
     parent = psutil.Process(process.pid)
     deadline = time.monotonic() + seconds
     while time.monotonic() < deadline and process.poll() is None:
-        with contextlib.suppress(psutil.Error):
-            found = [c for c in parent.children(recursive=True) if word in " ".join(c.cmdline())]
-            if found:
-                return found
+        found = []
+        with contextlib.suppress(psutil.Error):  # the parent itself may have ended
+            for child in parent.children(recursive=True):
+                try:  # chromium's helper processes come and go: skip one that just ended
+                    if word in " ".join(child.cmdline()):
+                        found.append(child)
+                except psutil.Error:
+                    continue
+        if found:
+            return found
         time.sleep(0.02)
     return []
 
@@ -218,7 +224,10 @@ def test_a_signal_stops_everything_and_leaves_nothing(
     args = ["good.yaml", "--output-dir", "out"] + (["--no-pdf"] if phase != "chromium" else [])
     process = _spawn(folder, *args)
     children = _children(process, phase, 180)
-    assert children, f"no {phase} process was seen"
+    if not children:
+        process.kill()
+        out, err = process.communicate(timeout=60)
+        raise AssertionError(f"no {phase} process was seen; exit {process.returncode}: {err}")
     if phase == "ipykernel":
         time.sleep(0.5)  # inside the report
     everything = psutil.Process(process.pid).children(recursive=True)
