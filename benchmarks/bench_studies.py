@@ -114,8 +114,11 @@ def main() -> None:
         "pool start-up",
     )
 
-    # 2. one worker against two, in turns in the same run; this process alone
-    n = 1000 if quick else 10_000
+    # 2. one worker against two, in turns in the same run, on the study of a hundred
+    # thousand crossings (a short study would time mostly the start and the last chunk);
+    # this process alone
+    n = 1000 if quick else n_big
+    rounds = 3
     table = scenarios(n, seed=1)
     context = multiprocessing.get_context("spawn")
     pools = {
@@ -126,8 +129,9 @@ def main() -> None:
         for workers, pool in pools.items():  # start the workers and load the compiled code
             studies.run(scenarios(4 * workers, seed=98), pool, progress=False, chunk_size=1)
         before = children_cpu()
-        times = alternating({w: (lambda p=p: timed(table, p)) for w, p in pools.items()}, 5)
-        per_cpu = 12 * n / (children_cpu() - before)  # (1 warm-up + 5) runs x 2 pools
+        runs = {w: (lambda p=p: timed(table, p)) for w, p in pools.items()}
+        times = alternating(runs, rounds)
+        per_cpu = 2 * (1 + rounds) * n / (children_cpu() - before)  # (warm-up + rounds) x 2
     finally:
         for pool in pools.values():
             pool.shutdown()
