@@ -38,6 +38,7 @@ from typing import Any
 import numpy as np
 
 from .. import _validation as check
+from .. import display
 from ..ranges import check_range, outside_note, warn_outside
 from ..units import g as GRAVITY
 
@@ -329,7 +330,8 @@ class VehicleSystem:
             kind = "mixed"
         return (
             f"VehicleSystem({label}{self.n_dofs} dofs, {self.n_axles} axles ({kind}), "
-            f"{self.weight / 1e3:.1f} kN, wheelbase {self.wheelbase:.2f} m)"
+            f"{display.short(self.weight, 'weight')}, "
+            f"wheelbase {display.short(self.wheelbase, 'length')})"
         )
 
 
