@@ -15,7 +15,7 @@ displacement power spectral density
     G_d(n) = G_d(n_0) \left(\frac{n}{n_0}\right)^{-w}, \qquad n_0 = 0.1\ \text{cycle/m},
 
 with ``G_d(n0)`` the study's "C10" [m^3] and waviness ``w``, realised as a sum of sines
-:math:`\Delta(x) = \sum_i \sqrt{2 G_d(n_i)\,\Delta n} \cos(2\pi n_i x + \varphi_i)` with
+:math:`\Delta(x) = \sum_i \sqrt{2 G_d(n_i)\,\Delta n} \cos(2\pi n_i x + \theta_i)` with
 uniform random phases (:meth:`Profile.iso8608`).  Teaching shapes (harmonic, bump, ramp, step)
 complete the module; measured profiles are read by :mod:`vbi_lib.profile_files`.
 """

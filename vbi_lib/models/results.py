@@ -85,7 +85,7 @@ class Crossing(ContactFlags):
         ``(n_time, n_axles)``: force each axle presses on the road [N] (negative: tension of
         a bilateral contact; 0: a tyre in flight).
     contact_force
-        Their sum ``(n_time,)`` [N]; for the study's sprung mass ``R = m_v g + F``.
+        Their sum ``(n_time,)`` [N]; for the study's sprung mass ``F_c = m_v g + F``.
     span_of_step
         Per node: 0 while the first axle is off the bridge, else the span of the step from
         the node.
