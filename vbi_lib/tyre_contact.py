@@ -40,7 +40,7 @@ import pandas as pd
 from . import _validation as check
 from .models import simulate_many
 from .models.base import broadcast
-from .validity import ContactFlags, ContactLossWarning
+from .validity import ContactFlags, ContactLossWarning, mark_lost_contact
 from .vehicles import DEFAULT_FOOTPRINT, QuarterCar, Vehicle, VehicleSystem
 
 if TYPE_CHECKING:
@@ -265,7 +265,8 @@ class ContactComparison(ContactFlags):
         ``kind="daf"``: each other idealisation against the first (the bilateral contact),
         at the first step; crossings in which the bilateral contact went tensile are
         filled, the others hollow.  ``kind="step"``: each idealisation at the second step
-        against the first.  Returns the axes.
+        against the first, the bilateral crossings that went tensile crossed
+        (:func:`vbi_lib.validity.mark_lost_contact`).  Returns the axes.
         """
         import matplotlib.pyplot as plt
 
@@ -291,6 +292,9 @@ class ContactComparison(ContactFlags):
             for k, name in enumerate(self.idealisations):
                 ax.plot(x[:, k], self.daf[1, :, k], "o", ms=4, mfc="none", color=f"C{k}",
                         label=name)  # fmt: skip
+            tensile = self.outside_validity[0, :, 0]  # the bilateral contact pulled the road
+            mark_lost_contact(ax, x[:, 0], self.daf[1, :, 0], tensile, color="C0",
+                              label="bilateral contact tensile (outside validity)")  # fmt: skip
             ax.set_xlabel(f"DAF at {self.step_factors[0]:g} x the default step [-]")
             ax.set_ylabel(f"DAF at {self.step_factors[1]:g} x the default step [-]")
         top = np.nanmax(self.daf) * 1.03
