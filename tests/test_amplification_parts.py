@@ -11,6 +11,8 @@ deflection, is 1 and its moment over the static PL/4 is k^2 pi^2 / 12 (closed fo
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -127,7 +129,9 @@ def test_the_parts_over_many_crossings_are_those_of_each() -> None:
     roads = {"a": vbi.Profile.iso8608(60.0, 0.05, iso_class="B", seed=1)}
     many = amplification_parts_over(bridge, TRUCK, roads, [15.0, 20.0], 20.0, [SPAN / 2],
                                     model="modal", modes=4)  # fmt: skip
-    run = vbi.simulate(bridge, TRUCK, roads["a"], 20.0, 20.0, model="modal", modes=4)
+    with warnings.catch_warnings():  # the class B road lifts this light truck a little
+        warnings.simplefilter("ignore", vbi.ContactLossWarning)
+        run = vbi.simulate(bridge, TRUCK, roads["a"], 20.0, 20.0, model="modal", modes=4)
     one = amplification_parts(run, run.sections([SPAN / 2]))
     mine = many[many.speed == 20.0].reset_index(drop=True)
     np.testing.assert_allclose(
