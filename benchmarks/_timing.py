@@ -4,7 +4,7 @@ The machine is shared: other work comes and goes while a benchmark runs.  So a c
 (batch against loop, one thread against two, one worker against two) is measured in one
 run, the candidates called in turns (:func:`alternating`), and every script states the load
 (:func:`load`).  :func:`report` prints a result and, when ``run_all.py`` asks for it, records
-it as a row of the README's Performance table.
+it as a row of the Performance table (book/performance.md).
 """
 
 from __future__ import annotations
@@ -55,7 +55,7 @@ def load() -> str:
 
 
 def report(what: str, target: str, measured: str) -> None:
-    """Print a result and record it as a row of the README's table (under ``run_all.py``)."""
+    """Print a result; under ``run_all.py``, record it as a row of the Performance table."""
     print(f"{what}: {measured}" + (f"  (target {target})" if target else ""), flush=True)
     if ROWS_FILE:
         with open(ROWS_FILE, "a") as rows:

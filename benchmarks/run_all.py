@@ -1,9 +1,10 @@
-"""Run every benchmark script, one process each, and rewrite the README's Performance table.
+"""Run every benchmark script, one process each, and rewrite the book's Performance table.
 
 ``make benchmarks`` runs this.  Each script prints its results and records the rows it
-reports (:func:`_timing.report`); the table between the README's ``benchmarks:start`` and
-``benchmarks:end`` markers is replaced by those rows, with the date and the load before
-and after, so the README says what this machine measured and under what load.
+reports (:func:`_timing.report`); the table between the ``benchmarks:start`` and
+``benchmarks:end`` markers of the book's page ``book/performance.md`` is replaced by those
+rows, with the date and the load before and after, so the page says what this machine
+measured and under what load.
 """
 
 from __future__ import annotations
@@ -17,7 +18,8 @@ import tempfile
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-README = HERE.parent / "README.md"
+#: The book's page that holds the table.
+PAGE = HERE.parent / "book" / "performance.md"
 START, END = "<!-- benchmarks:start -->", "<!-- benchmarks:end -->"
 #: The scripts, in the order of the table.
 SCRIPTS = [
@@ -65,13 +67,13 @@ def main() -> None:
                            cwd=HERE.parent, env=env)  # fmt: skip
             if record.exists():
                 rows += [json.loads(line) for line in record.read_text().splitlines()]
-    text = README.read_text()
+    text = PAGE.read_text()
     if START not in text or END not in text:
-        raise SystemExit(f"{README} has no {START} ... {END} markers; table not written")
+        raise SystemExit(f"{PAGE} has no {START} ... {END} markers; table not written")
     head, rest = text.split(START, 1)
     _, tail = rest.split(END, 1)
-    README.write_text(head + table(rows, before, load()) + tail)
-    print(f"README.md: Performance table rewritten ({len(rows)} rows)")
+    PAGE.write_text(head + table(rows, before, load()) + tail)
+    print(f"{PAGE.relative_to(HERE.parent)}: Performance table rewritten ({len(rows)} rows)")
 
 
 if __name__ == "__main__":

@@ -4,16 +4,24 @@ References: a truck crawling over a flat road (no dynamics: the forces are the w
 1); the exact statics of one simple span and two equal spans written independently in
 :func:`vbi_lib.closed_forms.point_load_statics` (the forces part recomputed from the axle
 forces and positions the crossing reports); a truck whose axles have all left the bridge
-(no forces, the inertia is the whole response).
+(no forces, the inertia is the whole response).  What a mode adds: on a simple span under
+one axle, mode k's deflection at midspan over the static one, scaled to the same largest
+deflection, is 1 and its moment over the static PL/4 is k^2 pi^2 / 12 (closed forms).
 """
 
 from __future__ import annotations
+
+import warnings
 
 import numpy as np
 import pytest
 
 import vbi_lib as vbi
-from vbi_lib.amplification_parts import amplification_parts
+from vbi_lib.amplification_parts import (
+    amplification_parts,
+    amplification_parts_over,
+    mode_contributions,
+)
 from vbi_lib.beam_statics import EFFECTS
 from vbi_lib.closed_forms import point_load_statics
 from vbi_lib.vehicles import Axle, IndependentAxles
@@ -102,3 +110,32 @@ def test_bad_input_is_named() -> None:
         amplification_parts(one, one.daf)
     with pytest.raises(ValueError, match="does not belong to crossing"):
         amplification_parts(one, other.sections([5.0]))
+
+
+def test_what_a_mode_adds_to_a_simple_span() -> None:
+    bridge = vbi.Bridge(SPAN, 1, 4e9, 6000.0)
+    added = mode_contributions(bridge, TRUCK, [SPAN / 2], modes=3)
+    for k in (1, 3):  # odd modes: the largest deflection at midspan
+        row = added.loc[SPAN / 2, f"mode {k}"]
+        assert row["deflection"] == pytest.approx(1.0, rel=1e-6)
+        assert row["moment"] == pytest.approx(k**2 * np.pi**2 / 12, rel=1e-6)
+    assert added.loc[SPAN / 2, ("mode 2", "deflection")] == pytest.approx(0.0, abs=1e-9)
+    over_support = mode_contributions(vbi.Bridge(SPAN, 2, 4e9, 6000.0), TRUCK, [SPAN], modes=2)
+    assert np.isnan(over_support.loc[SPAN, ("mode 1", "deflection")])
+
+
+def test_the_parts_over_many_crossings_are_those_of_each() -> None:
+    bridge = vbi.Bridge(SPAN, 1, 4e9, 6000.0)
+    roads = {"a": vbi.Profile.iso8608(60.0, 0.05, iso_class="B", seed=1)}
+    many = amplification_parts_over(bridge, TRUCK, roads, [15.0, 20.0], 20.0, [SPAN / 2],
+                                    model="modal", modes=4)  # fmt: skip
+    with warnings.catch_warnings():  # the class B road lifts this light truck a little
+        warnings.simplefilter("ignore", vbi.ContactLossWarning)
+        run = vbi.simulate(bridge, TRUCK, roads["a"], 20.0, 20.0, model="modal", modes=4)
+    one = amplification_parts(run, run.sections([SPAN / 2]))
+    mine = many[many.speed == 20.0].reset_index(drop=True)
+    np.testing.assert_allclose(
+        mine[["daf", "forces", "inertia"]], one[["daf", "forces", "inertia"]]
+    )
+    assert (mine["road"] == "a").all() and len(many) == 2 * len(one)
+    assert (mine["min F_c / P"] == run.min_contact_force_ratio).all()

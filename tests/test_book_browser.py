@@ -4,7 +4,8 @@ Every page of the session's book build (``book_build`` in conftest) is served fr
 by a server this module starts and stops, and opened in Debian's Chromium driven by
 Playwright. Any request for a URL outside that server is blocked and recorded: the book must
 render offline. On every page: no console error, no failed request, the math typeset by
-MathJax (no raw TeX left), and every saved ipywidgets view drawn as a widget. A screenshot of
+MathJax (no raw TeX left) and no display equation wider than the text column (at the
+1280 px window), and every saved ipywidgets view drawn as a widget. A screenshot of
 each page is kept in ``_build/screenshots/``.
 
 Outside CI the test skips when Chromium or Playwright is missing; on CI (``CI=true``) it fails.
@@ -92,6 +93,7 @@ class PageReport:
     console: list[str] = field(default_factory=list)
     raw_tex: list[str] = field(default_factory=list)
     widgets: list[str] = field(default_factory=list)
+    too_wide: list[str] = field(default_factory=list)
 
     def problems(self) -> list[str]:
         named = {
@@ -100,8 +102,15 @@ class PageReport:
             "console errors": self.console,
             "raw TeX left": self.raw_tex,
             "widgets": self.widgets,
+            "display equations wider than the text column": self.too_wide,
         }
         return [f"{self.path}: {name}: {items}" for name, items in named.items() if items]
+
+
+#: Display equations whose typeset width runs past the text column (cut, or a scroll bar).
+TOO_WIDE_CHECK = """() => [...document.querySelectorAll('div.math')]
+    .filter(e => e.scrollWidth > e.clientWidth + 2)
+    .map(e => `${e.id || '(no id)'}: ${e.scrollWidth - e.clientWidth} px too wide`)"""
 
 
 def pages(html: Path) -> list[str]:
@@ -184,6 +193,7 @@ def test_every_page_renders_offline(book_build: BookBuild, book_server: str) -> 
                     if untypeset:
                         report.raw_tex.append(f"{untypeset} math elements not typeset")
                     report.raw_tex += page.evaluate(RAW_TEX_CHECK)
+                    report.too_wide += page.evaluate(TOO_WIDE_CHECK)
                 views = page.locator(WIDGET_VIEW).count()
                 if views:
                     widget_pages += 1

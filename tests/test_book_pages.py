@@ -7,6 +7,8 @@
 - The API reference has a page for every public module of ``vbi_lib``, found by walking the
   package, so a module added, moved or removed is followed.
 - Each chapter's papermill ``parameters`` cell is folded.
+- Equations are numbered per chapter, (3.1), (3.2), ... without a gap, and every reference
+  to an equation reads a number of that form.
 """
 
 from __future__ import annotations
@@ -124,6 +126,23 @@ def test_parameters_cell_is_folded(book_build: BookBuild) -> None:
         assert folded is not None, f"{chapter.name}: parameters cell not folded"
         assert "quick" in folded.get_text(), f"{chapter.name}: the fold hides no code"
         assert vbi_book.PARAMETERS_PROMPT in folded.summary.get_text()
+
+
+def test_equations_are_numbered_per_chapter(book_build: BookBuild) -> None:
+    html = book_build.require()
+    chapters = sorted((html / "notebooks").glob("*.html"))
+    assert chapters
+    for chapter in chapters:
+        number = vbi_book.chapter_number(f"notebooks/{chapter.stem}")
+        soup = BeautifulSoup(chapter.read_text(encoding="utf-8"), "html.parser")
+        shown = [span.get_text(strip=True).rstrip("#¶") for span in soup.select("span.eqno")]
+        shown = [re.sub(r"[^\d.()]", "", text) for text in shown]
+        expected = [f"({number}.{k})" for k in range(1, len(shown) + 1)]
+        assert shown == expected, f"{chapter.name}: equation numbers {shown[:8]}..."
+        for ref in soup.select("a.reference span.eqno, a.reference.internal"):
+            text = ref.get_text(strip=True)
+            if re.fullmatch(r"\(\d+(\.\d+)?\)", text):
+                assert "." in text, f"{chapter.name}: an equation reference reads {text}"
 
 
 @pytest.mark.parametrize("name", ["simulate", "Bridge", "Vehicle", "Profile"])

@@ -91,3 +91,55 @@ def test_table_writes_integers_as_integers() -> None:
     frame = pd.DataFrame({"spans": [1, 2], "DAF [-]": [1.0, 2.5]})
     text = display.table(frame, "c", "table-ints", number_format="{:.2f}", index=False)
     assert "| 1 | 1.00 |" in text.markdown and "| 2 | 2.50 |" in text.markdown
+
+
+def test_table_formats_each_column_to_its_meaning() -> None:
+    import pandas as pd
+
+    frame = pd.DataFrame(
+        {
+            ("mode 1", "deflection"): [0.5, np.nan],
+            ("mode 1", "moment"): [0.25, 0.125],
+            "span [ft]": [40.0, 100.0],
+        }
+    )
+    text = display.table(
+        frame,
+        "c",
+        "table-formats",
+        index=False,
+        formats={"span [ft]": "{:.0f}", "mode 1, moment": lambda v: f"{100 * v:.0f} %"},
+    ).markdown
+    lines = text.splitlines()
+    assert lines[3] == "| mode 1, deflection | mode 1, moment | span [ft] |"
+    assert lines[5] == "| 0.5 | 25 % | 40 |"
+    assert lines[6] == f"| {display.MISSING} | 12 % | 100 |"  # NaN is a dash, not "nan"
+    with pytest.raises(ValueError, match=r"formats=\['span'\] name no column"):
+        display.table(frame, "c", "table-formats", formats={"span": "{:.0f}"})
+
+
+def test_short_values_follow_the_display_units() -> None:
+    display.set_units("US")
+    assert display.short(30.48, "length") == "100.0 ft"
+    assert display.short(7.5e12 * u.lbf * u.inch**2, "flexural_rigidity") == "7.500e+12 lbf in²"
+    display.set_units("SI")
+    assert display.short(30.48, "length") == "30.48 m"
+    assert display.short(2303.0, "mass_per_length") == "2303 kg/m"
+    assert display.short(0.0, "length") == "0 m"
+
+
+def test_reprs_follow_the_display_units() -> None:
+    import vbi_lib as vbi
+
+    bridge = vbi.Bridge.from_midspan_stiffness(100 * u.ft, 1, 497527 * u.lbf / u.inch, 3.99)
+    truck = vbi.Vehicle.from_frequency(200 * u.slinch, 4.5, 0.10, damped=True)
+    road = vbi.Profile.flat(650 * u.ft, 1 * u.inch)
+    display.set_units("US")
+    assert "1 span x 100.0 ft" in repr(bridge) and "lbf in²" in repr(bridge)
+    assert "m = 200.0 slinch (weight 77.22 kip)" in repr(truck)
+    assert "over 650.0 ft, spacing 1.000 in" in repr(road)
+    assert "72.00 kip, wheelbase 28.00 ft" in repr(vbi.vehicles.hs20().system)
+    display.set_units("SI")
+    assert "1 span x 30.48 m" in repr(bridge) and "N m²" in repr(bridge)
+    assert "m = 35.03 t" in repr(truck)
+    assert "over 198.1 m, spacing 25.4 mm" in repr(road)

@@ -38,6 +38,16 @@ def test_notebook_is_clean(path: Path) -> None:
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_notebook_has_its_key_points_once(path: Path) -> None:
+    """One "Key points" box at the end, not a heading of that name above it as well."""
+    cells = json.loads(path.read_text())["cells"]
+    text = "".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
+    assert text.count("Key points") == 1, "'Key points' must appear once"
+    last = "".join(cells[-1]["source"])
+    assert "```{admonition} Key points" in last, "the chapter must end with its key points"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_notebook_runs_quick(path: Path, tmp_path: Path) -> None:
     command = [
         sys.executable,

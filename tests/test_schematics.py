@@ -15,12 +15,12 @@ from vbi_lib import schematics  # noqa: E402
 
 #: Symbols each figure must show (as matplotlib mathtext, the notation page's symbols).
 SYMBOLS = {
-    "2.10.1": [r"$k_v$", r"$c_v$", r"$m_v$", r"$EI$", r"$\bar m$", r"$\Delta(x)$", r"$R$", "$L$"],
+    "2.10.1": [r"$k_v$", r"$c_v$", r"$m_v$", r"$EI$", r"$\bar m$", r"$\Delta(x)$", r"$F_c$", "$L$"],
     "2.13.1": [r"$k_v$", r"$c_v$", r"$m_v$", r"$u_v$", r"$m^*$", r"$k^*$", r"$c^*$", r"$z_b$"],
     "2.13.2": [r"$u_v$", r"$u_b = \psi(x_v)", r"$EI$", r"$\bar m$", r"$x_v = x_0 + v", "$L$"],
     "2.13.3": [r"$u_v$", r"$u_b = \psi(x_v)", r"$EI$", r"0 \leq x \leq 2L", "$L$"],
     "2.15.1": [r"$m_v$", r"$\Delta(x)$", "$m_v g + F$", "no feedback", r"$z_b$"],
-    "2.15.2": ["$R = m_v g + F$", r"$F = k_v(r - u_v)", r"$r = \psi(x_v)", "contact force $R$"],
+    "2.15.2": ["$F_c = m_v g + F$", r"$F = k_v(r - u_v)", r"$r = \psi(x_v)", "contact force $F_c$"],
 }
 
 

@@ -111,6 +111,13 @@ def test_summary_counts_and_statistics() -> None:
     frame = result.to_dataframe()
     assert len(frame) == 2 * 3 * 3
     assert frame["lost contact"].sum() == 2 * 3  # the bump crossing, at both steps
+    each = result.crossings()
+    assert each.shape == (3, 6) and each.index.name == "crossing"
+    np.testing.assert_array_equal(each["DAF, lift-off"], result.daf[0, :, 1])
+    assert each.loc[1, "min F_c / P, bilateral"] < 0 < each.loc[1, "in the air [%], lift-off"]
+    assert each.loc[0, "in the air [%], quarter car"] == 0.0
+    with pytest.raises(IndexError, match="step=2 must index step_factors"):
+        result.crossings(2)
 
 
 def test_plots_label_their_axes() -> None:

@@ -19,17 +19,31 @@ at every section and effect of a crossing, on any bridge and with any vehicle:
 * ``inertia``: the rest, ``daf - forces``, the response to the bridge's own inertia and
   damping forces (the dynamic part of the mode-acceleration method,
   :mod:`vbi_lib.models.sections`).
+
+:func:`amplification_parts_over` does it for many crossings (roads and speeds) at once, and
+:func:`mode_contributions` shows where the inertia part comes from: how much a unit of
+vibration of each exact mode adds to each section's DAF, for the deflection and the moment
+(the study's equations 29-31 on a simple span, any bridge here).
 """
 
 from __future__ import annotations
 
+import itertools
+import warnings
+from collections.abc import Mapping, Sequence
+
 import numpy as np
 import pandas as pd
 
-from .beam_statics import EFFECTS, continuous_statics
-from .models import Crossing, SectionResponse
+from .beam_statics import EFFECTS, continuous_statics, static_envelope
+from .bridges import Bridge
+from .models import Crossing, SectionResponse, simulate
+from .modes import beam_modes
+from .profiles import Profile
+from .validity import ContactLossWarning
+from .vehicles import as_system
 
-__all__ = ["amplification_parts"]
+__all__ = ["amplification_parts", "amplification_parts_over", "mode_contributions"]
 
 
 def amplification_parts(crossing: Crossing, response: SectionResponse) -> pd.DataFrame:
@@ -117,3 +131,116 @@ def amplification_parts(crossing: Crossing, response: SectionResponse) -> pd.Dat
                 }
             )
     return pd.DataFrame(rows)
+
+
+def amplification_parts_over(
+    bridge: Bridge,
+    vehicle: object,
+    roads: Mapping[object, Profile],
+    speeds: float | Sequence[float],
+    bridge_start: float,
+    sections: float | Sequence[float],
+    **options: object,
+) -> pd.DataFrame:
+    """:func:`amplification_parts` of every crossing of a vehicle over several roads and speeds.
+
+    Parameters
+    ----------
+    bridge, vehicle, bridge_start, options
+        As :func:`vbi_lib.simulate` (e.g. ``model="modal", modes=10``).
+    roads
+        ``{name: road}``; every road crosses every speed.
+    speeds
+        Speeds [m/s].
+    sections
+        Stations from the bridge start [m], as for :meth:`vbi_lib.Crossing.sections`.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The rows of :func:`amplification_parts` for every crossing, with ``road`` (the
+        name), ``speed`` [m/s], ``min F_c / P`` (the crossing's smallest contact force over
+        the static load) and ``lost contact``.
+    """
+    speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    parts = []
+    with warnings.catch_warnings():  # contact loss is a column of the result
+        warnings.simplefilter("ignore", ContactLossWarning)
+        for (name, road), speed in itertools.product(roads.items(), speeds):
+            run = simulate(bridge, vehicle, road, speed, bridge_start, **options)
+            split = amplification_parts(run, run.sections(sections))
+            parts.append(
+                split.assign(
+                    road=name,
+                    speed=speed,
+                    **{
+                        "min F_c / P": run.min_contact_force_ratio,
+                        "lost contact": run.lost_contact,
+                    },
+                )  # fmt: skip
+            )
+    return pd.concat(parts, ignore_index=True)
+
+
+def mode_contributions(
+    bridge: Bridge, vehicle: object, sections: Sequence[float], modes: int = 4
+) -> pd.DataFrame:
+    r"""What a unit of vibration of each mode adds to each section's DAF, by effect.
+
+    Mode :math:`k` of the bridge (:func:`vbi_lib.beam_modes`) vibrates with a largest
+    deflection along the bridge equal to the largest static deflection the vehicle's axles
+    cause at the sections (:func:`vbi_lib.beam_statics.static_envelope`).  Its deflection
+    :math:`\phi_k` and its bending moment :math:`EI\phi_k''` at each section, over the
+    governing static extreme of the same effect there, are what that vibration adds to the
+    section's DAF: on a simple span in its first mode, the study's :math:`48/\pi^4` and
+    :math:`4/\pi^2` per unit of inertia (its equations 26-27), whose ratio is
+    :math:`12/\pi^2`.
+
+    Parameters
+    ----------
+    bridge
+        Any bridge.
+    vehicle
+        Any vehicle (its static axle loads and offsets).
+    sections
+        Stations from the bridge start [m].
+    modes
+        How many modes, from the first.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Index ``section`` [m]; columns ``(mode k, "deflection")`` and ``(mode k,
+        "moment")``, magnitudes.  The deflection is NaN where its static extreme is zero
+        (over a support).
+
+    Examples
+    --------
+    A simple span and one axle: the first mode adds 12/pi^2 times more to the midspan
+    deflection than to the midspan moment.
+
+    >>> import vbi_lib as vbi
+    >>> added = mode_contributions(vbi.Bridge(20.0, 1, 4e9, 6000.0),
+    ...                            vbi.Vehicle(2e4, 1e7, 0.0), [10.0], modes=1)
+    >>> row = added.loc[10.0, "mode 1"]
+    >>> round(float(row["deflection"] / row["moment"]), 4), round(12 / np.pi**2, 4)
+    (1.2159, 1.2159)
+    """
+    stations = np.atleast_1d(np.asarray(sections, dtype=float))
+    system = as_system(vehicle)
+    static = static_envelope(bridge.spans, bridge.EI, stations, system.static_loads,
+                             system.offsets)  # fmt: skip
+    larger = static.maximum >= -static.minimum
+    governing = np.where(larger, static.maximum, static.minimum)  # (effect, section)
+    shapes = beam_modes(bridge, int(modes))
+    along = shapes.shape(np.linspace(0.0, bridge.length, 1201))
+    scale = np.abs(governing[0]).max() / np.abs(along).max(axis=0)  # per mode
+    deflection = governing[0].copy()
+    deflection[np.abs(deflection) <= 1e-9 * np.abs(deflection).max()] = np.nan
+    columns = {}
+    for k in range(int(modes)):
+        name = f"mode {k + 1}"
+        columns[(name, "deflection")] = np.abs(shapes.shape(stations)[:, k] / deflection) * scale[k]
+        moment = bridge.EI * shapes.curvature(stations)[:, k] / governing[1]
+        columns[(name, "moment")] = np.abs(moment) * scale[k]
+    return pd.DataFrame(columns, index=pd.Index(stations, name="section"))

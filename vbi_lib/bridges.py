@@ -35,6 +35,7 @@ from dataclasses import dataclass
 from functools import cached_property, lru_cache
 
 from . import _validation as check
+from . import display
 from .continuous_beams import natural_wavenumbers, support_stations
 from .ranges import check_range
 
@@ -390,14 +391,17 @@ class Bridge:
         return factor * float(force) * self.span**3 / self.EI
 
     def __repr__(self) -> str:
+        # in the display units of the session (vbi_lib.display.set_units), SI by default
         if self.equal_spans:
             layout = "1 span" if self.n_spans == 1 else f"{self.n_spans} spans"
-            layout += f" x {self.span:.2f} m"
+            layout += f" x {display.short(self.span, 'length')}"
         else:
-            layout = "spans " + " + ".join(f"{length:.2f}" for length in self.spans) + " m"
+            lengths = (f"{display.value(length, 'length'):.2f}" for length in self.spans)
+            layout = "spans " + " + ".join(lengths) + f" {display.symbol('length')}"
         return (
             f"Bridge({layout}, f1 = {self.first_frequency_hz:.2f} Hz, "
-            f"EI = {self.EI:.3e} N m^2, mbar = {self.mass_per_length:.0f} kg/m, "
+            f"EI = {display.short(self.EI, 'flexural_rigidity')}, "
+            f"mbar = {display.short(self.mass_per_length, 'mass_per_length')}, "
             f"zeta = {self.damping_ratio:.1%})"
         )
 

@@ -25,8 +25,11 @@ shows a table as a numbered, captioned table with :func:`table`::
 from __future__ import annotations
 
 import re
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
+
+import numpy as np
 
 from . import units as u
 
@@ -38,6 +41,7 @@ __all__ = [
     "fmt",
     "label",
     "set_units",
+    "short",
     "symbol",
     "table",
     "value",
@@ -179,6 +183,36 @@ def fmt(si_value: float, quantity: str, digits: int = 3) -> str:
     return f"{main} ({si_value / other_size:.{digits}g} {other_symbol})"
 
 
+def _plain(number: float, digits: int) -> str:
+    """``number`` with ``digits`` significant digits, in fixed notation between 1e-3 and 1e6."""
+    size = abs(number)
+    if not np.isfinite(number) or size == 0:
+        return f"{number:g}"
+    if not 1e-3 <= size < 1e6:
+        return f"{number:.{digits - 1}e}"
+    decimals = max(0, digits - 1 - int(np.floor(np.log10(size))))
+    return f"{number:.{decimals}f}"
+
+
+def short(si_value: float, quantity: str, digits: int = 4) -> str:
+    """A value in the display unit only, for reprs: ``"100.0 ft"``, ``"30.48 m"``.
+
+    ``digits`` significant digits in fixed notation (scientific below 1e-3 and from 1e6 on,
+    e.g. flexural rigidities); ``ValueError`` for an unknown quantity.
+
+    >>> set_units("US")
+    >>> short(30.48, "length")
+    '100.0 ft'
+    >>> set_units("SI")
+    >>> short(30.48, "length")
+    '30.48 m'
+    >>> short(2.16e10, "flexural_rigidity")
+    '2.160e+10 N m²'
+    """
+    symbol_, size = _unit(quantity)
+    return f"{_plain(float(si_value) / size, digits)} {symbol_}"
+
+
 # ---------------------------------------------------------------------------- book tables
 _LABEL = re.compile(r"^[a-z][a-z0-9]*(-[a-z0-9]+)*$")
 
@@ -203,14 +237,25 @@ class Table:
         return f"Table({self.name!r})"
 
 
-def _cell(value: Any, number_format: str) -> str:
-    """One cell's text: integers as integers, other numbers in ``number_format``."""
+#: What a table shows for a missing value (NaN, None): an en dash.
+MISSING = "\u2013"
+#: A column's format: ``str.format`` text such as ``"{:.2f}"``, or a function of the value.
+Format = str | Callable[[Any], str]
+
+
+def _cell(value: Any, number_format: Format) -> str:
+    """One cell's text: integers as integers, other numbers in ``number_format``, a missing
+    value as :data:`MISSING`."""
     kind = getattr(getattr(value, "dtype", None), "kind", "")
-    if isinstance(value, bool) or kind == "b":
+    if value is None or (isinstance(value, float | np.floating) and np.isnan(value)):
+        return MISSING
+    if isinstance(value, bool | np.bool_) or kind == "b":
         return "yes" if value else "no"
-    if isinstance(value, int) or kind in ("i", "u"):
+    if isinstance(value, int | np.integer) or kind in ("i", "u"):
         return str(int(value))
-    if isinstance(value, float) or kind == "f":
+    if isinstance(value, float | np.floating) or kind == "f":
+        if callable(number_format):
+            return number_format(float(value))
         try:
             return number_format.format(float(value))
         except (ValueError, TypeError):
@@ -218,19 +263,30 @@ def _cell(value: Any, number_format: str) -> str:
     return str(value)
 
 
+def _flat(name: Any) -> str:
+    """A column name as one header: the levels of a multi-level name joined by commas."""
+    if isinstance(name, tuple):
+        return ", ".join(str(level) for level in name if str(level))
+    return str(name)
+
+
 def table(
     frame: Any,
     caption: str,
     name: str,
-    number_format: str = "{:.4g}",
+    number_format: Format = "{:.4g}",
     index: bool = True,
+    formats: Mapping[str, Format] | None = None,
 ) -> Table:
     """A DataFrame as a numbered, captioned table of the book (MyST ``{table}`` directive).
 
-    Numbers are written with ``number_format`` (``str.format`` syntax) unless the column is
-    already text, so format a column yourself (e.g. with :func:`fmt`) to give it units or its
-    own digits; numeric columns are right-aligned.  Column names should carry their units
-    (:func:`label`).  Pipes and line breaks in cells are escaped.
+    The one way the chapters show a table.  Numbers are written with ``number_format``
+    (``str.format`` syntax or a function of the value), or with the column's own entry in
+    ``formats``, unless the column is already text; format a column yourself (e.g. with
+    :func:`fmt`) to give each cell its unit.  Integers stay integers, booleans read "yes"
+    and "no", a missing value (NaN, None) is an en dash.  Column names should carry their
+    units (:func:`label`); a multi-level column name is joined with commas.  Numeric
+    columns are right-aligned; pipes and line breaks in cells are escaped.
 
     Parameters
     ----------
@@ -244,7 +300,10 @@ def table(
     number_format
         Format of numeric cells.
     index
-        Whether the index is the first column (its name heads it).
+        Whether the index is the first column (its name heads it; the levels of a
+        multi-level index are columns of their own).
+    formats
+        Formats of particular columns, by their (joined) names; every name must be a column.
 
     Returns
     -------
@@ -255,21 +314,22 @@ def table(
     TypeError
         ``frame`` is not a DataFrame.
     ValueError
-        An empty or multi-line caption, a name that is not a label, or a table without
-        rows or columns.
+        An empty or multi-line caption, a name that is not a label, a table without rows or
+        columns, or ``formats`` naming a column the table does not have.
 
     Examples
     --------
     >>> import pandas as pd
-    >>> t = table(pd.DataFrame({"DAF [-]": [1.234567]}, index=pd.Index(["a"], name="run")),
-    ...           "One run.", "table-one-run")
+    >>> t = table(pd.DataFrame({"DAF [-]": [1.234567], "span [m]": [30.48]},
+    ...                        index=pd.Index(["a"], name="run")),
+    ...           "One run.", "table-one-run", formats={"span [m]": "{:.1f}"})
     >>> print(t.markdown)
     :::{table} One run.
     :name: table-one-run
     <BLANKLINE>
-    | run | DAF [-] |
-    |:---|---:|
-    | a | 1.235 |
+    | run | DAF [-] | span [m] |
+    |:---|---:|---:|
+    | a | 1.235 | 30.5 |
     :::
     """
     import pandas as pd
@@ -285,22 +345,32 @@ def table(
         )
     if frame.empty:
         raise ValueError("frame has no rows or no columns: there is no table to show")
-    shown = frame.reset_index() if index else frame
+    shown = frame.reset_index() if index else frame.copy()
     if index and shown.columns[0] == "index":
         shown = shown.rename(columns={"index": ""})
+    shown.columns = [_flat(c) for c in shown.columns]
+    formats = dict(formats or {})
+    unknown = sorted(set(formats) - set(shown.columns))
+    if unknown:
+        raise ValueError(
+            f"formats={unknown} name no column of the table; its columns are {list(shown.columns)}"
+        )
     types = pd.api.types
     numeric = [
-        types.is_numeric_dtype(shown[c]) and not types.is_bool_dtype(shown[c])
-        for c in shown.columns
+        types.is_numeric_dtype(shown.iloc[:, k]) and not types.is_bool_dtype(shown.iloc[:, k])
+        for k in range(shown.shape[1])
     ]
 
     def escape(text: object) -> str:
         return str(text).replace("|", "\\|").replace("\n", " ")
 
+    column_formats = [formats.get(c, number_format) for c in shown.columns]
     header = "| " + " | ".join(escape(c) for c in shown.columns) + " |"
     rule = "|" + "|".join("---:" if n else ":---" for n in numeric) + "|"
     rows = [
-        "| " + " | ".join(escape(_cell(v, number_format)) for v in row) + " |"
+        "| "
+        + " | ".join(escape(_cell(v, f)) for v, f in zip(row, column_formats, strict=True))
+        + " |"
         for row in shown.itertuples(index=False)
     ]
     text = "\n".join([f":::{{table}} {caption.strip()}", f":name: {name}", "", header, rule, *rows])

@@ -15,7 +15,7 @@ displacement power spectral density
     G_d(n) = G_d(n_0) \left(\frac{n}{n_0}\right)^{-w}, \qquad n_0 = 0.1\ \text{cycle/m},
 
 with ``G_d(n0)`` the study's "C10" [m^3] and waviness ``w``, realised as a sum of sines
-:math:`\Delta(x) = \sum_i \sqrt{2 G_d(n_i)\,\Delta n} \cos(2\pi n_i x + \varphi_i)` with
+:math:`\Delta(x) = \sum_i \sqrt{2 G_d(n_i)\,\Delta n} \cos(2\pi n_i x + \theta_i)` with
 uniform random phases (:meth:`Profile.iso8608`).  Teaching shapes (harmonic, bump, ramp, step)
 complete the module; measured profiles are read by :mod:`vbi_lib.profile_files`.
 """
@@ -29,6 +29,7 @@ import numpy as np
 import scipy.fft
 
 from . import _validation as check
+from . import display
 from .ranges import MAX_SAMPLES, RANGES, check_range
 
 #: ISO 8608 road classes and the geometric mean of ``G_d(n0)`` of each [m^3].
@@ -517,8 +518,9 @@ class Profile:
         rms = float(np.sqrt(np.mean((self.elevation - self.elevation.mean()) ** 2)))
         label = f"{self.name!r}, " if self.name else ""
         return (
-            f"Profile({label}{self.x.size} samples over {self.length:.2f} m, "
-            f"spacing {self.spacing * 1e3:.1f} mm, rms {rms * 1e3:.2f} mm)"
+            f"Profile({label}{self.x.size} samples over {display.short(self.length, 'length')}, "
+            f"spacing {display.short(self.spacing, 'spacing', 3)}, "
+            f"rms {display.short(rms, 'elevation', 3)})"
         )
 
 

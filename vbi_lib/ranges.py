@@ -1,7 +1,7 @@
 """Ranges of validity of every physical input: one table, one check.
 
 :data:`RANGES` is the one table of what each physical input may be, used by the classes and
-functions that take it (the README's table is generated from it, :func:`ranges_markdown`):
+functions that take it (the book's page of ranges is generated from it, :func:`ranges_markdown`):
 
 * a value outside the **hard** limits is physically meaningless (a 1 mm span, a speed of
   10^6 m/s, a road with 100 m of relief): it is refused with a ``ValueError`` naming the
@@ -340,13 +340,13 @@ RANGES: dict[str, Range] = {
         "m",
         (0.0, 1.0),
         None,
-        "no road's unevenness has an rms of a metre; the top of class H with w = 2 has 0.7 m",
+        "no road's unevenness has an rms of a metre; the top of class H with W = 2 has 0.7 m",
         "",
         "Profile.iso8608, ISOProfile (from c10, waviness, band and length, before building)",
         open_low=True,
     ),
     "waviness": Range(
-        "ISO 8608 waviness w",
+        "ISO 8608 waviness W",
         "-",
         (1.0, 5.0),
         (1.5, 4.5),
@@ -498,7 +498,7 @@ def check_range(key: str, value: object, name: str | None = None, *, warn: bool 
 
 
 def ranges_markdown() -> str:
-    """The table of :data:`RANGES` in Markdown (the README's table of ranges of validity)."""
+    """The table of :data:`RANGES` in Markdown (the book's page of ranges of validity)."""
     lines = [
         "| input | quantity | refused outside | warned outside | checked by |",
         "|---|---|---|---|---|",

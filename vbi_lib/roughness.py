@@ -45,6 +45,7 @@ import scipy.linalg
 import scipy.signal
 
 from . import _validation as check
+from . import display
 from .profiles import ISO_BAND, Profile
 from .ranges import RANGES, outside_note, warn_outside
 
@@ -382,13 +383,14 @@ class IriResult:
     def __repr__(self) -> str:
         label = f"{self.name!r}, " if self.name else ""
         length = self.stop[-1] - self.start[0]
-        head = f"IriResult({label}{length:.0f} m: IRI {self.iri:.2f} m/km"
+        head = f"IriResult({label}{display.short(length, 'length', 3)}: IRI {self.iri:.2f} m/km"
         if self.segment_length is None:
             return head + ")"
         shown = ", ".join(f"{v:.2f}" for v in self.segment_iri[:6])
         more = ", ..." if self.segment_iri.size > 6 else ""
         return (
-            f"{head}; {self.segment_iri.size} segments of {self.segment_length:g} m: {shown}{more})"
+            f"{head}; {self.segment_iri.size} segments of "
+            f"{display.short(self.segment_length, 'length', 3)}: {shown}{more})"
         )
 
 

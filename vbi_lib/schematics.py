@@ -21,7 +21,7 @@ bridge damping ratio :math:`\zeta_b`, shape function :math:`\psi(x)`, generalise
 suspension stiffness and damping :math:`m_v, k_v, c_v`, the vehicle's displacement
 :math:`u_v`, the bridge's deflection under the wheel :math:`u_b`, the wheel's station
 :math:`x_v`, speed :math:`v`, road profile :math:`\Delta(x)`, suspension force :math:`F` and
-contact force :math:`R = m_v g + F`.  Displacements are drawn positive up, as the library
+contact force :math:`F_c = m_v g + F`.  Displacements are drawn positive up, as the library
 counts them.
 
 The drawings are schematic: proportions are chosen to be read, not to scale.
@@ -260,7 +260,7 @@ def combined_systems(ax: Axes | None = None) -> Axes:
     A truck (sprung mass :math:`m_v` on a suspension :math:`k_v, c_v`) drives at speed
     :math:`v` from the approach road onto a bridge (mass per length :math:`\bar m`,
     stiffness :math:`EI`, damping :math:`\zeta_b`); the tyre presses on the road with the
-    contact force :math:`R`, which depends on the road profile :math:`\Delta(x)` under the
+    contact force :math:`F_c`, which depends on the road profile :math:`\Delta(x)` under the
     wheel and on the bridge's own motion.  These are the parts the study lists as needed by
     any vehicle-bridge model (its chapter 10).
 
@@ -289,7 +289,7 @@ def combined_systems(ax: Axes | None = None) -> Axes:
     top = _vehicle(ax, xv, road, speed=r"speed $v$")
     _text(ax, xv + 0.95, top - 0.35, "vehicle", ha="left", va="center")
     _arrow(ax, (xv + 0.55, -0.75), (xv + 0.55, road - 0.02), color=_FORCE)
-    _text(ax, xv + 0.55, -0.8, r"contact force $R$", color=_FORCE, ha="center", va="top")
+    _text(ax, xv + 0.55, -0.8, r"contact force $F_c$", color=_FORCE, ha="center", va="top")
     _text(ax, 0.15, -0.3, "approach road", ha="left", va="center")
     _text(ax, x0 + span / 2, 0.75, r"road profile $\Delta(x)$", ha="center", va="center")
     bridge = r"bridge: $\bar m$, $EI$, $\zeta_b$"
@@ -480,7 +480,7 @@ def coupled_model(ax: Axes | None = None) -> Axes:
     The truck rides the moving bridge: the wheel follows
     :math:`r = \psi(x_v) z_b + \Delta(x_v)`, the suspension force
     :math:`F = k_v(r - u_v) + c_v(\dot r - \dot u_v)` (46) depends on both, and the contact
-    force :math:`R = m_v g + F` pushes the bridge down and the wheel up, equal and
+    force :math:`F_c = m_v g + F` pushes the bridge down and the wheel up, equal and
     opposite (equations 47-48).
 
     Parameters
@@ -508,8 +508,8 @@ def coupled_model(ax: Axes | None = None) -> Axes:
     middle = surface + gap / 2
     _arrow(ax, (xv, middle), (xv, surface + gap), color=_FORCE, lw=2 * _THIN)
     _arrow(ax, (xv, middle), (xv, surface), color=_FORCE, lw=2 * _THIN)
-    _text(ax, xv + 0.25, middle, "contact force $R$", color=_FORCE, ha="left", va="center")
-    _text(ax, span + 0.4, 3.2, "$R = m_v g + F$", ha="left", va="center")
+    _text(ax, xv + 0.25, middle, "contact force $F_c$", color=_FORCE, ha="left", va="center")
+    _text(ax, span + 0.4, 3.2, "$F_c = m_v g + F$", ha="left", va="center")
     force = "$F = k_v(r - u_v) + c_v(\\dot r - \\dot u_v)$"
     _text(ax, span + 0.4, 2.4, force, ha="left", va="center")
     _text(ax, span + 0.4, 1.6, "$r = \\psi(x_v)\\,z_b + \\Delta(x_v)$", ha="left", va="center")

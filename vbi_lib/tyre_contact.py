@@ -3,7 +3,7 @@ r"""How much of a DAF survives when the tyre can leave the road: one truck, thre
 The study's truck is a sprung mass whose spring and damper stand on the road (study
 equations 46-47): the contact force
 
-.. math:: R = m_v g + k_v (r - u_v) + c_v (\dot r - \dot u_v)
+.. math:: F_c = m_v g + k_v (r - u_v) + c_v (\dot r - \dot u_v)
 
 may become negative, as if the tyre pulled the road down.  A crossing in which it does is
 outside the model's validity.  :func:`compare_contact` runs the same crossings with three
@@ -11,7 +11,7 @@ idealisations of the same truck (:func:`contact_variants`):
 
 * ``"bilateral"``: the study's sprung mass as it is (:class:`~vbi_lib.Vehicle`);
 * ``"lift-off"``: the same mass, spring and damper, but the contact pushes and never pulls,
-  :math:`R = \max(0, \dots)`: the truck flies when the force would turn tensile and lands
+  :math:`F_c = \max(0, \dots)`: the truck flies when the force would turn tensile and lands
   when it turns compressive again (:class:`~vbi_lib.vehicles.VehicleSystem` with
   ``unilateral=[True]``);
 * ``"quarter car"``: the sprung mass and its suspension on an axle of mass
@@ -40,7 +40,7 @@ import pandas as pd
 from . import _validation as check
 from .models import simulate_many
 from .models.base import broadcast
-from .validity import ContactFlags, ContactLossWarning
+from .validity import ContactFlags, ContactLossWarning, mark_lost_contact
 from .vehicles import DEFAULT_FOOTPRINT, QuarterCar, Vehicle, VehicleSystem
 
 if TYPE_CHECKING:
@@ -206,6 +206,40 @@ class ContactComparison(ContactFlags):
                 )
         return pd.DataFrame(rows).set_index(["idealisation", "step factor"])
 
+    def crossings(self, step: int = 0) -> pd.DataFrame:
+        """One row per crossing at one step: its DAF with each contact, side by side.
+
+        Parameters
+        ----------
+        step
+            Index into :attr:`step_factors` (0: each crossing's default step).
+
+        Returns
+        -------
+        pandas.DataFrame
+            Index ``crossing`` (the order of the inputs); columns ``DAF, <idealisation>``
+            for each idealisation, ``min F_c / P, bilateral`` (the smallest contact force of
+            the study's contact over the static load: below 0 it pulled the road down) and
+            ``in the air [%], <idealisation>`` for the two that can fly.
+
+        Raises
+        ------
+        IndexError
+            ``step`` is not an index of :attr:`step_factors`.
+        """
+        if not -len(self.step_factors) <= step < len(self.step_factors):
+            raise IndexError(
+                f"step={step!r} must index step_factors={self.step_factors}; use 0 for the "
+                "default step"
+            )
+        columns = {
+            f"DAF, {name}": self.daf[step, :, k] for k, name in enumerate(self.idealisations)
+        }
+        columns["min F_c / P, bilateral"] = self.min_contact_force_ratio[step, :, 0]
+        for k, name in enumerate(self.idealisations[1:], start=1):
+            columns[f"in the air [%], {name}"] = 100.0 * self.flight_fraction[step, :, k]
+        return pd.DataFrame(columns, index=pd.RangeIndex(len(self), name="crossing"))
+
     def to_dataframe(self) -> pd.DataFrame:
         """One row per crossing, idealisation and step factor, with the contact checks."""
         n_steps, n, k = self.daf.shape
@@ -231,7 +265,8 @@ class ContactComparison(ContactFlags):
         ``kind="daf"``: each other idealisation against the first (the bilateral contact),
         at the first step; crossings in which the bilateral contact went tensile are
         filled, the others hollow.  ``kind="step"``: each idealisation at the second step
-        against the first.  Returns the axes.
+        against the first, the bilateral crossings that went tensile crossed
+        (:func:`vbi_lib.validity.mark_lost_contact`).  Returns the axes.
         """
         import matplotlib.pyplot as plt
 
@@ -257,6 +292,9 @@ class ContactComparison(ContactFlags):
             for k, name in enumerate(self.idealisations):
                 ax.plot(x[:, k], self.daf[1, :, k], "o", ms=4, mfc="none", color=f"C{k}",
                         label=name)  # fmt: skip
+            tensile = self.outside_validity[0, :, 0]  # the bilateral contact pulled the road
+            mark_lost_contact(ax, x[:, 0], self.daf[1, :, 0], tensile, color="C0",
+                              label="bilateral contact tensile (outside validity)")  # fmt: skip
             ax.set_xlabel(f"DAF at {self.step_factors[0]:g} x the default step [-]")
             ax.set_ylabel(f"DAF at {self.step_factors[1]:g} x the default step [-]")
         top = np.nanmax(self.daf) * 1.03

@@ -10,9 +10,15 @@ The ranges of validity of the inputs, and the checks that raise
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
 __all__ = [
+    "LOST_CONTACT_LABEL",
     "ContactFlags",
     "ContactLossWarning",
     "FailedRowsWarning",
@@ -20,7 +26,11 @@ __all__ = [
     "VbiWarning",
     "contact_note",
     "flight_note",
+    "mark_lost_contact",
 ]
+
+#: The legend entry of the crosses :func:`mark_lost_contact` draws.
+LOST_CONTACT_LABEL = "contact lost (outside validity)"
 
 
 class VbiWarning(UserWarning):
@@ -106,3 +116,70 @@ def flight_note(flight_fraction: float) -> str:
             "timing grows sensitive to every input (halve dt to see how much the DAF moves)"
         )
     return text
+
+
+def mark_lost_contact(
+    ax: Axes,
+    x: object,
+    y: object,
+    lost: object,
+    *,
+    color: str = "k",
+    label: str | None = LOST_CONTACT_LABEL,
+    size: float = 6.0,
+) -> int:
+    """Cross the points of the crossings that lost contact, as every figure of the book does.
+
+    A crossing whose contact force turned tensile is outside the model's validity; a figure
+    that shows its DAF marks it with a cross over its point, so that no such value is shown
+    bare.
+
+    Parameters
+    ----------
+    ax
+        The matplotlib axes the points are drawn on.
+    x, y
+        The points' coordinates, one per crossing (array-likes of one length).
+    lost
+        Whether each crossing lost contact (``lost_contact``), booleans of the same length.
+    color
+        Colour of the crosses (that of the points' series, or black).
+    label
+        Legend entry, given once per axes (a second call with the same label adds none);
+        ``None`` for no entry.
+    size
+        Marker size [points].
+
+    Returns
+    -------
+    int
+        How many points were crossed.
+
+    Raises
+    ------
+    ValueError
+        ``x``, ``y`` and ``lost`` differ in length.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> mark_lost_contact(ax, [1, 2, 3], [1.2, 1.5, 2.4], [False, True, True])
+    2
+    >>> plt.close(fig)
+    """
+    xs, ys = np.asarray(x, dtype=float).ravel(), np.asarray(y, dtype=float).ravel()
+    out = np.asarray(lost, dtype=bool).ravel()
+    if not xs.size == ys.size == out.size:
+        raise ValueError(
+            f"x, y and lost must have one entry per crossing; got {xs.size}, {ys.size} and "
+            f"{out.size}"
+        )
+    if label is not None and label in ax.get_legend_handles_labels()[1]:
+        label = None
+    if out.any():
+        ax.plot(xs[out], ys[out], "x", color=color, ms=size, mew=1.2, ls="none", label=label,
+                zorder=5)  # fmt: skip
+    return int(out.sum())

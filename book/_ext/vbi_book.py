@@ -17,6 +17,10 @@
 - Removes the API pages that autosummary generated on the previous build (``book/api/``), so
   that a module added, moved or removed in ``vbi_lib`` never leaves a stale page behind; they
   are generated again from the package on every build.
+- Numbers equations per chapter: (3.1), (3.2), ... in ``notebooks/03-...``, restarting in
+  every chapter, so that a page's own numbers never look like the study's (which each
+  restated equation shows beside it as a tag, "(study 46)"); equations on the other pages
+  are numbered (1), (2), ... on their page.  References ({eq}) follow.
 """
 
 from __future__ import annotations
@@ -84,6 +88,36 @@ def _switch_off_thebe(app: Sphinx, config: Any) -> None:
 def _remove_generated_api_pages(app: Sphinx, config: Any) -> None:
     # before sphinx-external-toc (priority 900) lists the files it excludes from the build
     shutil.rmtree(Path(app.confdir) / API_PAGES, ignore_errors=True)
+
+
+#: A chapter's number from its document name: ``notebooks/03-the-two-...`` is chapter 3.
+_CHAPTER = re.compile(r"(?:^|/)(\d{2})-[^/]+$")
+
+
+def chapter_number(docname: str) -> int | None:
+    """The chapter number of a document, from its file name; ``None`` for other pages.
+
+    >>> chapter_number("notebooks/03-the-two-degree-of-freedom-model")
+    3
+    >>> chapter_number("book/notation") is None
+    True
+    """
+    match = _CHAPTER.search(docname)
+    return int(match.group(1)) if match else None
+
+
+def _number_equations_by_chapter(app: Sphinx, env: BuildEnvironment) -> list[str]:
+    # After Sphinx has numbered every figure type across the book (env-get-updated, priority
+    # 500): equations restart on each page, prefixed by the chapter's number.  The HTML of
+    # an equation and every {eq} reference read these numbers.
+    for docname, numbers in env.toc_fignumbers.items():
+        equations = numbers.get("displaymath")
+        if not equations:
+            continue
+        chapter = chapter_number(docname)
+        for n, key in enumerate(sorted(equations, key=equations.__getitem__), start=1):
+            equations[key] = (chapter, n) if chapter is not None else (n,)
+    return []
 
 
 def _fold_parameters_cell(app: Sphinx, docname: str, source: list[str]) -> None:
@@ -222,4 +256,5 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("config-inited", _remove_generated_api_pages, priority=400)
     app.connect("source-read", _fold_parameters_cell)
     app.connect("missing-reference", _resolve_package_alias)
+    app.connect("env-get-updated", _number_equations_by_chapter, priority=900)
     return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}

@@ -6,12 +6,13 @@ vehicle is a :class:`~vbi_lib.vehicles.VehicleSystem` whose axle ``a`` is at
 the road under axle ``a`` is :math:`r_a = \psi_a z_b + \bar\Delta_a` and
 
 .. math::
-    P_a &= W_a + k_a (r_a - e_a \cdot u) + c_a (\dot r_a - e_a \cdot \dot u), \qquad
+    \tilde F_a &= P_a + k_a (r_a - e_a \cdot u) + c_a (\dot r_a - e_a \cdot \dot u), \qquad
         \dot r_a = \psi_a \dot z_b + \epsilon\, v \psi'_a z_b + \dot{\bar\Delta}_a \\
-    M \ddot u + C \dot u + K u &= E^T (R - W), \qquad
-    m^* \ddot z_b + c^* \dot z_b + k^* z_b = -\textstyle\sum_a \psi_a R_a
+    M \ddot u + C \dot u + K u &= E^T (\mathbf{F}_c - \mathbf{P}), \qquad
+    m^* \ddot z_b + c^* \dot z_b + k^* z_b = -\textstyle\sum_a \psi_a F_{c,a}
 
-with :math:`R_a = P_a` for a bilateral contact and :math:`\max(0, P_a)` for a tyre.  One
+with the contact force :math:`F_{c,a} = \tilde F_a` for a bilateral contact and
+:math:`\max(0, \tilde F_a)` for a tyre, :math:`P_a` the axle's static load.  One
 axle with :math:`M = m_v`, :math:`K = C = 0`, :math:`E = 1` is the study's equations
 (46)-(58).  States :math:`y = (u, \dot u, z_b, \dot z_b)`, classical RK4 on the node grid
 (the road under every axle is linear within a step); a tyre's take-off or landing inside a

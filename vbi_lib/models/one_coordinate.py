@@ -12,7 +12,7 @@ wheel is :math:`r = \psi z_b + \Delta` and
     m_v \ddot u_v &= F \\
     m^* \ddot z_b + c^* \dot z_b + k^* z_b &= -\psi\, (m_v g + F)
 
-(the contact force pressing on the road is :math:`R = m_v g + F`).  :math:`\epsilon = 1` keeps
+(the contact force pressing on the road is :math:`F_c = m_v g + F`).  :math:`\epsilon = 1` keeps
 the convective part of the wheel's velocity; the study's own code had :math:`\epsilon = 0`.
 The decoupled variant (92)-(99) drops the bridge from :math:`F`.  Written as
 :math:`\dot z = A(x_v) z + B(x_v) U + f(x_v)`, the matrices are built in one place,

@@ -85,7 +85,7 @@ class Crossing(ContactFlags):
         ``(n_time, n_axles)``: force each axle presses on the road [N] (negative: tension of
         a bilateral contact; 0: a tyre in flight).
     contact_force
-        Their sum ``(n_time,)`` [N]; for the study's sprung mass ``R = m_v g + F``.
+        Their sum ``(n_time,)`` [N]; for the study's sprung mass ``F_c = m_v g + F``.
     span_of_step
         Per node: 0 while the first axle is off the bridge, else the span of the step from
         the node.
@@ -406,7 +406,7 @@ class Crossing(ContactFlags):
                     y = display.value(y, "deflection")
                 ax.plot(x, y, label=f"span {j + 1}")
             if kind == "displacement":
-                ax.set_ylabel("midspan displacement / static deflection [-]")
+                ax.set_ylabel("midspan displacement / $w_{static}$ [-]")
             else:
                 ax.set_ylabel(display.label("midspan displacement", "deflection"))
             if self.bridge.n_spans > 1:
@@ -420,7 +420,7 @@ class Crossing(ContactFlags):
                     ax.plot(x, self.axle_contact_force_ratio[:, a], label=f"axle {a + 1}")
                 ax.legend(loc="best")
             ax.axhline(0.0, color="k", lw=0.8)
-            ax.set_ylabel("contact force / static load [-]")
+            ax.set_ylabel("$F_c / P$ [-]")
         else:
             system = self.system
             if system.n_dofs == 1:
@@ -444,7 +444,7 @@ class Crossing(ContactFlags):
             f"{display.fmt(self.speed, 'speed')}: DAF {dafs}"
         )
         if self.outside_validity:
-            text += f"; CONTACT LOST (min R/W {self.min_contact_force_ratio:.2f})"
+            text += f"; CONTACT LOST (min F_c/P {self.min_contact_force_ratio:.2f})"
         if self.flight_fraction > 0:
             text += f"; tyre off the road {self.flight_fraction:.0%} of the time"
         return text + ")"
@@ -538,7 +538,7 @@ class BatchResult(ContactFlags):
             ax.plot(v, self.contact_force_amplification[order], "o-", ms=3, label="largest")
             ax.plot(v, self.min_contact_force_ratio[order], "o-", ms=3, label="smallest")
             ax.axhline(0.0, color="k", lw=0.8)
-            ax.set_ylabel("contact force / weight [-]")
+            ax.set_ylabel("$F_c / P$ [-]")
         if lost.any():
             ax.plot([], [], "x", color="k", label="contact lost (outside validity)")
         if flew.any():

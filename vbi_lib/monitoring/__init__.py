@@ -21,7 +21,10 @@ measurement (chapter 11):
 * :mod:`~vbi_lib.monitoring.synthetic`: gauge records made from simulated crossings, with
   noise and drift (:func:`record_from_crossing`);
 * :mod:`~vbi_lib.monitoring.load_tests`: the DAF per gauge, speed and run of a load test with
-  crawl runs or a parked truck (:func:`daf_from_load_test`), the definition (17).
+  crawl runs or a parked truck (:func:`daf_from_load_test`), the definition (17);
+* :mod:`~vbi_lib.monitoring.trials`: the methods tried on simulated crossings whose true DAF
+  is known (:func:`crawl_static`, :func:`gauge_trial`, :func:`filter_trial`,
+  :func:`strain_trial`, :func:`load_test_trial`).
 """
 
 from __future__ import annotations
@@ -58,8 +61,17 @@ from .records import (
     daf_from_record,
 )
 from .synthetic import record_from_crossing
+from .trials import (
+    CRAWL_SPEED,
+    crawl_static,
+    filter_trial,
+    gauge_trial,
+    load_test_trial,
+    strain_trial,
+)
 
 __all__ = [
+    "CRAWL_SPEED",
     "DEFAULT_FILTER_ORDER",
     "DISPLACEMENT_INERTIA_COEFFICIENT",
     "MAX_CRAWL_RESIDUAL",
@@ -78,16 +90,21 @@ __all__ = [
     "Axles",
     "RecordDAF",
     "RecordDAFs",
+    "crawl_static",
     "daf_from_load_test",
     "daf_from_record",
     "displacement_daf",
     "estimate_first_frequency",
     "extra_amplification_ratio",
+    "filter_trial",
+    "gauge_trial",
     "inertia_ratio",
     "influence_line",
+    "load_test_trial",
     "lowpass",
     "noise_std",
     "plot_extra_amplification",
     "record_from_crossing",
     "strain_daf",
+    "strain_trial",
 ]

@@ -1,8 +1,8 @@
 """DAF from a load test: runs at speed divided by crawl runs or a parked truck (study eq. 17).
 
 With the bridge closed to traffic, a truck of known weight crawls across (or parks at the
-critical position) to give each gauge's static response :math:`R_{sta}`, then crosses at
-speed to give dynamic peaks :math:`R_{dyn}`; ``DAF = R_dyn / R_sta`` (17) per gauge, speed and
+critical position) to give each gauge's static response :math:`Q_{sta}`, then crosses at
+speed to give dynamic peaks :math:`Q_{dyn}`; ``DAF = Q_dyn / Q_sta`` (17) per gauge, speed and
 run.  The loading direction of each gauge (tension up, deflection down) is the sign of its
 static response, and the dynamic peak is taken in that direction.
 

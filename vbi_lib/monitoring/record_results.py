@@ -15,6 +15,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
+from .. import display
+
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
@@ -126,7 +128,7 @@ class RecordDAF:
             parts.append(f"cut-off {self.cutoff_hz:.3g} Hz, f1 {f1}, loading {fl}")
         else:
             if self.speed is not None:
-                parts.append(f"speed {self.speed:.3g} m/s")
+                parts.append(f"speed {display.short(self.speed, 'speed', 3)}")
             parts.append(f"fit residual {self.fit_residual:.1%}")
         return (
             f"RecordDAF(DAF {self.daf:.3f} by {self.method}{flag}: peak {self.peak:.4g} / "

@@ -1,7 +1,7 @@
 r"""DAF of recorded events in service: the peak over a quasi-static estimate (study eq. 17).
 
 A gauge on a bridge in service records every vehicle that crosses; no crawl run gives the
-static response :math:`R_{sta}` of the study's definition (17), so it is estimated from the
+static response :math:`Q_{sta}` of the study's definition (17), so it is estimated from the
 record.  :func:`daf_from_record` returns ``DAF = peak / quasi-static peak`` with one of three
 estimates (the study's section on operational monitoring and load testing):
 

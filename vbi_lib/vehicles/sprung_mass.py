@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from .. import _validation as check
+from .. import display
 from ..ranges import check_range
 from ..units import g
 from .system import VehicleSystem
@@ -149,6 +150,7 @@ class Vehicle:
 
     def __repr__(self) -> str:
         return (
-            f"Vehicle(m = {self.mass:.0f} kg, f = {self.frequency_hz:.2f} Hz, "
+            f"Vehicle(m = {display.short(self.mass, 'mass')} "
+            f"(weight {display.short(self.weight, 'weight')}), f = {self.frequency_hz:.2f} Hz, "
             f"zeta = {self.damping_ratio:.1%})"
         )

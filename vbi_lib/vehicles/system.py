@@ -5,25 +5,27 @@ rotations [rad], measured from its static equilibrium on a level road) and ``n_a
 contact points, the axles, at fixed distances behind the first one.  Its equations are
 
 .. math::
-    M \ddot u + C \dot u + K u = E^T (R - W), \qquad
-    P_a = W_a + k_a (r_a - e_a \cdot u) + c_a (\dot r_a - e_a \cdot \dot u)
+    M \ddot u + C \dot u + K u = E^T (\mathbf{F}_c - \mathbf{P}), \qquad
+    \tilde F_a = P_a + k_a (r_a - e_a \cdot u) + c_a (\dot r_a - e_a \cdot \dot u)
 
 with :math:`M` the mass matrix (symmetric positive definite; diagonal for point masses, not
 for a pitching body), :math:`K, C` the internal (suspension) stiffness and damping, row
 :math:`e_a` of :math:`E` the combination of the degrees of freedom that moves contact point
-``a``, :math:`W_a` the static load of axle ``a`` and :math:`k_a, c_a` its contact spring and
+``a``, :math:`P_a` the static load of axle ``a`` and :math:`k_a, c_a` its contact spring and
 damper, acting between :math:`e_a \cdot u` and the road :math:`r_a` under the axle (the
 profile seen through the tyre's footprint plus the bridge's deflection there).  The contact
-force :math:`R_a` pressing on the road is
+force :math:`F_{c,a}` pressing on the road (the book's notation) is
 
-* **bilateral** (the study's assumption, 46-47): :math:`R_a = P_a`, which may become tensile;
+* **bilateral** (the study's assumption, 46-47): :math:`F_{c,a} = \tilde F_a`, which may
+  become tensile;
   the contact spring of the study's sprung mass is its suspension;
-* **unilateral** (a tyre): :math:`R_a = \max(0, P_a)`; the wheel flies while :math:`P_a`
+* **unilateral** (a tyre): :math:`F_{c,a} = \max(0, \tilde F_a)`; the wheel flies while
+  :math:`\tilde F_a`
   would be tensile and lands when it turns compressive again.
 
 Gravity does not appear because :math:`u` is measured from the static equilibrium: the static
 loads balance the weight of the masses (checked: a rigid vertical translation :math:`d` with
-:math:`E d = 1`, :math:`K d = C d = 0` exists and :math:`E^T W - g M d` is a set of
+:math:`E d = 1`, :math:`K d = C d = 0` exists and :math:`E^T \mathbf{P} - g M d` is a set of
 suspension preloads :math:`K u_0`).  In flight the released preloads and the weight act
 together, so the whole vehicle's centre of mass falls at :math:`g`.
 """
@@ -38,6 +40,7 @@ from typing import Any
 import numpy as np
 
 from .. import _validation as check
+from .. import display
 from ..ranges import check_range, outside_note, warn_outside
 from ..units import g as GRAVITY
 
@@ -329,7 +332,8 @@ class VehicleSystem:
             kind = "mixed"
         return (
             f"VehicleSystem({label}{self.n_dofs} dofs, {self.n_axles} axles ({kind}), "
-            f"{self.weight / 1e3:.1f} kN, wheelbase {self.wheelbase:.2f} m)"
+            f"{display.short(self.weight, 'weight')}, "
+            f"wheelbase {display.short(self.wheelbase, 'length')})"
         )
 
 

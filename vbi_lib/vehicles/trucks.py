@@ -69,8 +69,9 @@ class QuarterCar:
     """A quarter car: sprung mass, suspension, unsprung mass and a tyre that can leave the road.
 
     Degrees of freedom ``(u_s, u_u)``, the sprung and unsprung displacements [m] from the
-    static position; the tyre force :math:`R = \\max(0, W + k_t (r - u_u) + c_t (\\dot r -
-    \\dot u_u))` with :math:`W = (m_s + m_u) g` (see :mod:`vbi_lib.vehicles.system`).
+    static position; the tyre's contact force :math:`F_c = \\max(0, P + k_t (r - u_u) +
+    c_t (\\dot r - \\dot u_u))` with :math:`P = (m_s + m_u) g` (see
+    :mod:`vbi_lib.vehicles.system`).
 
     Parameters
     ----------
