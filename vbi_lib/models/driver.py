@@ -17,6 +17,7 @@ from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
 from ..ranges import MAX_NODES, RANGES, check_range, warn_outside
+from ..road_checks import road_notes
 from ..validity import ContactLossWarning, contact_note, flight_note
 from ..vehicles import as_system
 from .base import (
@@ -455,6 +456,7 @@ def _check_steps(
     spacing = np.array([_uneven_spacing(x) or np.nan for x in batch.profiles])[batch.profile]
     f_max = DEFAULT_OMEGA_DT / defaults / (2.0 * math.pi)
     suspects |= spacing * 2.0 * f_max / batch.speed > RANGES["sample_spacing"].soft[1]
+    suspects |= np.array([bool(road_notes(x)) for x in batch.profiles])[batch.profile]  # h23
     outside: dict[int, list[str]] = {}
     for i in np.flatnonzero(suspects):
         notes = _crossing_notes(kind, batch, int(i), dt)
