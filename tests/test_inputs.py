@@ -513,3 +513,155 @@ def test_a_declared_count_is_never_allocated(tmp_path: Path) -> None:
     finally:
         tracemalloc.stop()
     assert peak < 10e6
+
+
+# ---------------------------------------------------------------------------- dead workers
+@dataclass(frozen=True)
+class WorkerKiller:
+    """A road recipe whose worker process dies when it builds it: ``kill -9`` of itself, as
+    the out-of-memory killer does (in the test's own process it builds a flat road, so that
+    ``studies.validate`` can try it)."""
+
+    start: float = 0.0
+    end: float = 200.0
+    label: str = "kills its worker"
+
+    def build(self) -> vbi.Profile:
+        import multiprocessing
+        import os
+        import signal
+
+        if multiprocessing.parent_process() is not None:
+            os.kill(os.getpid(), signal.SIGKILL)
+        return vbi.Profile.flat(self.end - self.start, 0.05, self.start)
+
+
+@dataclass(frozen=True)
+class MarkedRoad:
+    """A flat road recipe that, built in a worker, leaves a file behind and takes a while
+    (so that a test knows when the workers are busy)."""
+
+    folder: str
+    key: int
+    start: float = 0.0
+    end: float = 200.0
+    label: str = "marked"
+
+    def build(self) -> vbi.Profile:
+        import multiprocessing
+        import time
+
+        if multiprocessing.parent_process() is not None:
+            (Path(self.folder) / f"built-{self.key}").touch()
+            time.sleep(0.3)
+        return vbi.Profile.flat(self.end - self.start, 0.05, self.start)
+
+
+def _spawn_pool(workers: int = 2) -> object:
+    import concurrent.futures as cf
+    import multiprocessing
+
+    return cf.ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"))
+
+
+def _marked_study(folder: Path, count: int) -> pd.DataFrame:
+    roads = [MarkedRoad(str(folder), k) for k in range(count)]
+    return pd.DataFrame([
+        {"bridge": bridge(), "vehicle": truck(), "profile": r, "speed": 20.0, "bridge_start": 50.0}
+        for r in roads
+    ])  # fmt: skip
+
+
+def _kill_when_busy(pids: Callable[[], list[int]], folder: Path, built: int) -> object:
+    """A thread that kills one worker with SIGKILL once ``built`` roads were built."""
+    import os
+    import signal
+    import threading
+    import time
+
+    def kill() -> None:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline:
+            if len(list(folder.glob("built-*"))) >= built and pids():
+                os.kill(pids()[0], signal.SIGKILL)
+                return
+            time.sleep(0.05)
+
+    thread = threading.Thread(target=kill, daemon=True)
+    thread.start()
+    return thread
+
+
+def test_a_worker_killed_once_loses_no_row(tmp_path: Path) -> None:
+    """kill -9 of one pool worker while it holds chunks (takes about 20 s: three pools
+    start).  Reference: the same study run serially; every row is kept and equal."""
+    table = _marked_study(tmp_path, 16)
+    pool = _spawn_pool()
+    try:
+        thread = _kill_when_busy(lambda: list(pool._processes), tmp_path, 3)
+        with pytest.warns(vbi.validity.WorkerLostWarning) as caught:
+            result = studies.run(table, pool, chunk_size=2)
+        thread.join(1)
+    finally:
+        pool.shutdown(cancel_futures=True)
+    message = " | ".join(str(w.message) for w in caught)
+    assert "worker" in message and "killed by signal 9" in message, message
+    assert "perhaps out of memory" in message and "__main__" not in message, message
+    assert "error" not in result.columns
+    serial = studies.run(table, "serial")
+    pd.testing.assert_frame_equal(result, serial)
+
+
+def test_a_chunk_whose_worker_dies_twice_keeps_nan_and_the_reason() -> None:
+    """A row whose road kills its worker each time: run again once, alone, then NaN with the
+    reason; the other rows finish (about 20 s)."""
+    rows = [{"profile": studies.FlatProfile(200.0, 0.05), "speed": s} for s in (15.0, 20.0)]
+    table = pd.DataFrame([
+        {"bridge": bridge(), "vehicle": truck(), "bridge_start": 50.0, **r}
+        for r in (rows[0], {"profile": WorkerKiller(), "speed": 18.0}, rows[1])
+    ])  # fmt: skip
+    pool = _spawn_pool()
+    try:
+        with (
+            pytest.warns(vbi.validity.WorkerLostWarning, match="perhaps out of memory"),
+            pytest.warns(vbi.validity.FailedRowsWarning, match="1 of 3 crossings failed"),
+        ):
+            result = studies.run(table, pool, chunk_size=1)
+    finally:
+        pool.shutdown(cancel_futures=True)
+    assert result["error"].isna().tolist() == [True, False, True]
+    reason = result["error"][1]
+    assert "again when it ran alone" in reason and "killed by signal 9" in reason, reason
+    assert "perhaps out of memory" in reason and "__main__" not in reason
+    assert np.isnan(result["daf"][1]) and np.isfinite(result["daf"][[0, 2]]).all()
+    alone = studies.run(table.iloc[[0, 2]], "serial")
+    np.testing.assert_array_equal(result["daf"][[0, 2]], alone["daf"])
+
+
+def test_a_dask_worker_killed_is_rescheduled(tmp_path: Path) -> None:
+    """kill -9 of a worker of a Dask LocalCluster: the cluster reruns its tasks; a row that
+    kills every worker that runs it gets the reason once the cluster gives up."""
+    distributed = pytest.importorskip("dask.distributed")
+    import dask
+
+    table = _marked_study(tmp_path, 12)
+    with (
+        dask.config.set({"distributed.scheduler.allowed-failures": 1}),
+        distributed.LocalCluster(
+            n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        thread = _kill_when_busy(lambda: list(client.run(__import__("os").getpid).values()),
+                                 tmp_path, 3)  # fmt: skip
+        result = studies.run(table, client.get_executor(), chunk_size=2)
+        thread.join(1)
+        assert not thread.is_alive()
+        assert "error" not in result.columns
+        pd.testing.assert_frame_equal(result, studies.run(table, "serial"))
+        killer = pd.concat([table.iloc[:1], table.iloc[:1].assign(profile=[WorkerKiller()])],
+                           ignore_index=True)  # fmt: skip
+        with pytest.warns(vbi.validity.FailedRowsWarning):
+            lost = studies.run(killer, client.get_executor(), chunk_size=1)
+    assert lost["error"].isna().tolist() == [True, False]
+    assert "workers died" in lost["error"][1] and "perhaps out of memory" in lost["error"][1]
