@@ -16,6 +16,16 @@ def save(results: pd.DataFrame, path: str | os.PathLike[str]) -> Path:
 
     The table is written to a temporary file beside ``path`` and moved into place.
 
+    Raises
+    ------
+    TypeError
+        ``path`` that is not a path, ``results`` that is not a DataFrame.
+    ValueError
+        A suffix other than ``.parquet``, ``.pq`` or ``.csv``.
+    FileNotFoundError, NotADirectoryError, IsADirectoryError
+        The folder of ``path`` does not exist or is not a folder, or ``path`` is a folder
+        (checked before anything is written).
+
     Examples
     --------
     >>> import pandas as pd, tempfile, os
@@ -24,12 +34,24 @@ def save(results: pd.DataFrame, path: str | os.PathLike[str]) -> Path:
     ...     load(p)["daf"].tolist()
     [1.1, 1.2]
     """
+    if isinstance(path, bytes) or not (isinstance(path, str) or hasattr(path, "__fspath__")):
+        raise TypeError(f"path={path!r} must be a file path (text or pathlib.Path)")
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix not in (".parquet", ".pq", ".csv"):
         raise ValueError(f"path={str(path)!r}: save to a '.parquet' or '.csv' file")
     if not isinstance(results, pd.DataFrame):
         raise TypeError(f"results must be a pandas.DataFrame, got {type(results).__name__}")
+    folder = path.parent
+    if not folder.exists():
+        raise FileNotFoundError(
+            f"path={str(path)!r}: the folder {str(folder)!r} does not exist; create it "
+            "(os.makedirs) or save elsewhere"
+        )
+    if not folder.is_dir():
+        raise NotADirectoryError(f"path={str(path)!r}: {str(folder)!r} is not a folder")
+    if path.is_dir():
+        raise IsADirectoryError(f"path={str(path)!r} is a folder; give a file name in it")
     handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     os.close(handle)
     try:
