@@ -20,7 +20,8 @@ the same things on its samples:
 
 Outside an intended range the road is warned about (:class:`~vbi_lib.OutsideValidityWarning`)
 once, by the reader or by the first crossing on it, and every crossing on it says so in its
-``notes``.  Beyond a hard limit (no road is like it) the sentence names the likely unit slip:
+``notes``.  Beyond a hard limit (no road is like it), or outside every intended range at
+once, the sentence names the likely unit slip:
 when the elevations divided (or the stations multiplied) by a common factor, such as 1000
 for millimetres read as metres, bring every measure inside its intended range, it says so
 (a deck in millimetres read with ``unit="m"`` turns a 25 mm joint into a 25 m wall; a
@@ -48,6 +49,7 @@ __all__ = [
     "crossing_road_notes",
     "inherit",
     "mark_checked",
+    "past_the_road",
     "road_measures",
     "road_notes",
     "warn_implausible",
@@ -173,9 +175,31 @@ def _scaled(measures: dict[str, float], elevation: float, stations: float) -> di
     }
 
 
-def _slip(measures: dict[str, float]) -> str:
-    """The unit slips (at most two, the likeliest first) that would bring every measure
-    inside its intended range, in words."""
+def _fits(profile: Any, stations: float, elevations: float) -> bool:
+    """Whether the road with its stations and elevations divided by these factors would be
+    inside every intended range (measured again: the slips are tried on implausible roads
+    only)."""
+    from .profiles import Profile  # profiles marks its roads with this module
+
+    copy = Profile(profile.x / stations, profile.elevation / elevations)
+    return _inside(_scaled(road_measures(copy), 1.0, 1.0))
+
+
+def _slip(profile: Any, measures: dict[str, float]) -> str:
+    """The unit slips (at most two, the likeliest first) that would make the road plausible,
+    in words: of both columns (a file read in the wrong unit), else of the elevations."""
+    spacing = float(np.median(np.diff(profile.x)))
+    both = [
+        (f, words, unit) for f, words, unit in _SLIPS
+        if spacing / f <= RANGES["iri_spacing"].soft[1] < spacing and _fits(profile, f, f)
+    ]  # fmt: skip
+    if both:
+        told = " or ".join(
+            f"{words} ({f:.4g} times too large: unit={unit!r})" for f, words, unit in both[:2]
+        )
+        return (
+            f"a unit slip of both columns would explain it (samples {spacing:.3g} m apart): {told}?"
+        )
     fits = [(f, words, unit) for f, words, unit in _SLIPS if _inside(_scaled(measures, f, 1.0))]
     if fits:
         told = " or ".join(
@@ -242,7 +266,7 @@ def road_notes(profile: Any) -> tuple[str, ...]:
     >>> x = np.arange(0.0, 60.0, 0.025)
     >>> deck = vbi.Profile(x, np.where(x > 30.0, 25.0, 0.0), name="deck")
     >>> print(road_notes(deck)[0][:73])
-    profile 'deck' is not a plausible road: unevenness 12.5 m (largest depar
+    profile 'deck' is not a plausible road: unevenness 12.5 m (largest depart
     >>> "millimetres read as metres" in road_notes(deck)[0]
     True
     """
@@ -256,7 +280,7 @@ def road_notes(profile: Any) -> tuple[str, ...]:
         hard = any(state == "hard" for state, _ in found)
         label = f"profile {profile.name!r}" if profile.name else "the profile"
         verdict = "is not a plausible road" if hard else "is outside the intended range of roads"
-        slip = f"; {_slip(measures)}" if hard else ""
+        slip = f"; {_slip(profile, measures)}" if hard or len(found) == 3 else ""
         notes = (
             f"{label} {verdict}: {'; '.join(words for _, words in found)}{slip}; the result is "
             "outside the model's validity",
@@ -287,3 +311,24 @@ def crossing_road_notes(profile: Any) -> tuple[list[str], list[str]]:
         return notes, []
     _store(profile, _WARNED, True)
     return [], notes
+
+
+def past_the_road(profile: Any, stop: float, free_vibration: float, speed: float) -> list[str]:
+    """The note of a run whose first axle goes past the profile's last station (a long
+    ``free_vibration``): beyond it the road is held level at its last elevation.
+
+    ``stop`` is the first axle's last station [m]; ``[]`` when the road reaches it.
+
+    >>> import vbi_lib as vbi
+    >>> past_the_road(vbi.Profile.flat(90.0, 0.5), 120.0, 2.0, 20.0)[0][:60]
+    'the run went 30 m past the end of the road (profile stations'
+    """
+    beyond = stop - float(profile.x[-1])
+    if beyond <= 1e-9 * max(1.0, abs(stop)):
+        return []
+    return [
+        f"the run went {beyond:.3g} m past the end of the road (profile stations "
+        f"{float(profile.x[0]):g} to {float(profile.x[-1]):g} m; free_vibration="
+        f"{free_vibration:g} s at {speed:g} m/s): beyond its last station the road is held "
+        "level at its last elevation; extend the profile to follow the road itself"
+    ]
