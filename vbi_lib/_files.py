@@ -139,6 +139,10 @@ def read_bytes(path: object, name: str = "path", max_bytes: int = MAX_FILE_BYTES
         info = os.stat(file)
     except OSError as exc:
         raise FileReadError(name, file, f"cannot be read ({exc.strerror or exc})") from None
+    except ValueError:  # a zero character in the path
+        raise FileReadError(
+            name, file, "cannot be a file name: it holds a zero character"
+        ) from None
     kind = _kind(info.st_mode)
     if kind is not None:
         raise FileReadError(name, file, f"is {kind}, not a regular file; give the path of a file")
