@@ -512,6 +512,14 @@ class Profile:
     def resampled(self, spacing: float) -> Profile:
         """The road read every ``spacing`` metres from its first station (linear interpolation).
 
+        Resampled more finely, the road is the same (it is linear between samples) but a
+        crossing has more nodes, so its DAF moves by its time-step error: over random
+        realistic crossings (tests/test_properties.py, ``test_resampling_the_road_converges``)
+        the one-coordinate model's (RK4) by at most 4e-6, the modal model's (Newmark, second
+        order) by at most 7e-4, each within its step error of the converged DAF (5e-6 and
+        3e-3).  A tyre with a footprint sees the road averaged over it at the samples, which
+        resampling refines too: up to 7e-4 (one-coordinate) and 2e-3 (modal) were found.
+
         >>> Profile.flat(10.0, 1.0).resampled(0.5).x.size
         21
         """
