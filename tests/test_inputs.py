@@ -298,7 +298,7 @@ ROWS = [
     row("a path given as bytes", lambda _: vbi.read_profile(b"/dev/zero", "m"), TypeError,
         "path=b'/dev/zero'"),
     row("a zero character in a path", lambda _: vbi.read_profile("a\x00b.csv", "m"),
-        ProfileFileError, "a\x00b.csv", "zero character"),
+        ProfileFileError, "'a\\x00b.csv'", "zero character"),
     row("save into a missing folder",
         lambda d: studies.save(pd.DataFrame({"daf": [1.0]}), d / "nowhere" / "s.csv"),
         FileNotFoundError, "path=", "nowhere", "does not exist"),

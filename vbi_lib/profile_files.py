@@ -56,7 +56,8 @@ class ProfileFileError(ValueError):
     """A profile file that cannot be read; the message names the file, the line and the fault."""
 
     def __init__(self, path: str | Path, line: int | None, problem: str) -> None:
-        where = f"{path}" if line is None else f"{path}, line {line}"
+        shown = str(path) if str(path).isprintable() else repr(str(path))  # a zero character
+        where = shown if line is None else f"{shown}, line {line}"
         super().__init__(f"{where}: {problem}")
         self.path = str(path)
         self.line = line
