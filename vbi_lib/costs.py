@@ -113,6 +113,8 @@ def warn_cost(seconds: float, what: str, cut: str) -> None:
 def warn_mode_search(n_spans: int, modes: int) -> None:
     """The hook of :func:`vbi_lib.modes.beam_modes`: warn before a long mode search."""
     seconds = mode_search_seconds(n_spans, modes)
+    if seconds <= LONG:
+        return
     warn_cost(
         seconds,
         f"finding the exact modes of {n_spans} spans, {modes} of them (estimated from one "
@@ -124,6 +126,8 @@ def warn_mode_search(n_spans: int, modes: int) -> None:
 def warn_crossing(model: str, nodes: int, modes: int | None, axles: int) -> None:
     """The hook of :func:`vbi_lib.simulate`: warn before a long crossing."""
     seconds = crossing_seconds(model, nodes, modes, axles)
+    if seconds <= LONG:
+        return
     shown = f", {modes} modes" if model == "modal" and modes else ""
     warn_cost(
         seconds,
