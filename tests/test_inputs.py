@@ -987,19 +987,19 @@ def test_a_bridge_at_exactly_the_frequency_limit_is_accepted() -> None:
 
 
 def test_a_long_mode_search_or_crossing_is_announced(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The estimate warns before the work: a mode search whose SVDs would take 1 s each
-    (monkeypatched: the real 200x200 SVD takes 5 to 100 ms with the machine's load), and a
-    modal crossing of 2e6 steps with 200 modes (estimated 100 s: nothing runs past the
-    warning, which the test turns into an error)."""
+    """The estimate warns before the work: a mode search whose timed pieces (a count, a
+    determinant, an SVD with its quadrature) take 50 ms each (monkeypatched: on the shared
+    machine they take 1 to 300 ms with its load), and a modal crossing of 2e6 steps with 200
+    modes (estimated 100 s: nothing runs past the warning, which the test makes an error)."""
     from vbi_lib import costs
 
-    monkeypatch.setattr(costs, "_svd_seconds", lambda size: 1.0)
+    monkeypatch.setattr(costs, "_slowest", lambda work: 0.05)  # each piece of work: 50 ms
     spans = [20.0 + i % 3 for i in range(50)]
-    with pytest.warns(vbi.validity.CostWarning, match=r"50 spans, 200 of them.*about 3 min"):
-        costs.warn_mode_search(50, 200)
+    with pytest.warns(vbi.validity.CostWarning, match=r"50 spans, 200 of them.*about 4 min"):
+        costs.warn_mode_search(spans, 200)  # 200 x (1 + 12 + 9) x 50 ms = 220 s
     with warnings.catch_warnings():
         warnings.simplefilter("error", vbi.validity.CostWarning)
-        costs.warn_mode_search(2, 200)  # two spans: seconds
+        costs.warn_mode_search(spans[:2], 200)  # two spans: seconds, not timed
         with pytest.raises(vbi.validity.CostWarning, match=r"2,000,001 time steps, 200 modes"):
             simulate({"model": "modal", "modes": 200, "dt": 2e-6})
         with pytest.raises(vbi.validity.CostWarning, match="finding the exact modes of 50"):

@@ -9,12 +9,11 @@ The estimates are deliberately simple and on the slow side (a warning is only us
 before the wait):
 
 * **mode search** (:func:`mode_search_seconds`, :func:`vbi_lib.modes.beam_modes`): per mode
-  one singular value decomposition of the ``4N x 4N`` matrix of the support conditions
-  (the null vector gives the mode's coefficients), timed here on a matrix of that size
-  so that the estimate follows this machine and its load, plus about :data:`PER_SPAN_MODE`
-  seconds per span and mode for the Wittrick-Williams counts and the Gauss-Legendre
-  quadrature of the mass normalisation (Python loops; measured on the project's 2-core
-  machine at a load of 9: 50 spans x 200 modes took 28.6 s, 26 s of it in the SVDs);
+  about 9 Wittrick-Williams counts, 12 determinants and one SVD of the ``4N x 4N`` matrix
+  of the support conditions, and the Gauss-Legendre quadrature of its mass normalisation;
+  one of each is timed here, when the search starts, so that the estimate follows this
+  machine and its load (on the project's shared 2-core machine 50 spans x 200 modes took
+  29 s at a load of 9 and more than 90 s at 11: the BLAS threads thrash);
 * **crossing** (:func:`crossing_seconds`, :func:`vbi_lib.simulate`): per time step,
   :data:`MODAL_NODE_MODE` seconds per mode and axle group of the modal kernel (about
   0.2 us measured at that load) or :data:`COORDINATE_NODE` per axle of the one-coordinate
@@ -25,7 +24,7 @@ from __future__ import annotations
 
 import time
 import warnings
-from functools import lru_cache
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
@@ -44,37 +43,49 @@ __all__ = [
 
 #: Work estimated to take longer than this is warned about [s].
 LONG = 60.0
-#: Seconds per span and mode of a mode search besides its SVD (counts and quadrature).
-PER_SPAN_MODE = 7e-4
+#: Seconds per span and mode of a search of fewer than 8 spans (not timed: seconds at most).
+PER_SPAN_MODE = 2e-3
 #: Seconds per time step, per mode and axle group, of the modal kernel.
 MODAL_NODE_MODE = 0.25e-6
 #: Seconds per time step and axle of the one-coordinate kernel.
 COORDINATE_NODE = 0.6e-6
 
 
-@lru_cache(maxsize=64)
-def _svd_seconds(size: int) -> float:
-    """Seconds one SVD of a ``size x size`` matrix takes here and now (best of two)."""
-    matrix = np.random.default_rng(0).standard_normal((size, size))
-    best = np.inf
-    for _ in range(2):
+def _slowest(work: Callable[[], object], repeats: int = 2) -> float:
+    """The slowest of ``repeats`` runs of ``work`` [s] (the load of a shared machine comes and
+    goes; an estimate meant to warn should not be the luckiest)."""
+    worst = 0.0
+    for _ in range(repeats):
         start = time.perf_counter()
-        np.linalg.svd(matrix)
-        best = min(best, time.perf_counter() - start)
-    return float(best)
+        work()
+        worst = max(worst, time.perf_counter() - start)
+    return worst
 
 
-def mode_search_seconds(n_spans: int, modes: int) -> float:
+def mode_search_seconds(n_spans: int, modes: int, spans: Sequence[float] | None = None) -> float:
     """Estimated seconds to find ``modes`` exact modes of a beam of ``n_spans`` spans.
 
-    ``modes * (t_svd(4 n_spans) + PER_SPAN_MODE * n_spans)``, with ``t_svd`` timed here on
-    a matrix of that size (only for 16 spans or more: below, a search takes seconds).
+    A search makes, per mode, about 9 Wittrick-Williams counts and 12 determinants of the
+    ``4N x 4N`` support conditions to isolate and refine the root, then one SVD for the
+    mode's coefficients and the quadrature of its mass normalisation
+    (:mod:`vbi_lib.continuous_beams`; counted on 20 and 50 spans).  For 8 spans or more one
+    of each is timed here and now, on a wavenumber of the middle mode, the slower of two
+    runs (under load the machine's BLAS threads make these vary tenfold); below, the search
+    takes at most seconds and :data:`PER_SPAN_MODE` stands for all of it.
 
     >>> mode_search_seconds(2, 5) < 1.0
     True
     """
-    svd = _svd_seconds(4 * n_spans) if n_spans >= 16 else 0.0
-    return modes * (svd + PER_SPAN_MODE * n_spans)
+    if n_spans < 8:
+        return modes * PER_SPAN_MODE * n_spans
+    from .continuous_beams import _determinant, count_below, mode_coefficients
+
+    lengths = np.asarray(spans if spans is not None else [1.0] * n_spans, dtype=float)
+    k = np.pi * max(1.0, modes / 2) / float(lengths.sum())  # about the middle mode's
+    coefficients = _slowest(lambda: mode_coefficients(lengths, k, 1.0))
+    determinant = _slowest(lambda: _determinant(k, lengths))
+    count = _slowest(lambda: count_below(k, lengths))
+    return modes * (coefficients + 12 * determinant + 9 * count)
 
 
 def crossing_seconds(model: str, nodes: int, modes: int | None, axles: int) -> float:
@@ -110,15 +121,16 @@ def warn_cost(seconds: float, what: str, cut: str) -> None:
         )
 
 
-def warn_mode_search(n_spans: int, modes: int) -> None:
+def warn_mode_search(spans: Sequence[float], modes: int) -> None:
     """The hook of :func:`vbi_lib.modes.beam_modes`: warn before a long mode search."""
-    seconds = mode_search_seconds(n_spans, modes)
+    seconds = mode_search_seconds(len(spans), modes, spans)
     if seconds <= LONG:
         return
+    size = 4 * len(spans)
     warn_cost(
         seconds,
-        f"finding the exact modes of {n_spans} spans, {modes} of them (estimated from one "
-        f"{4 * n_spans}x{4 * n_spans} SVD timed now, one per mode)",
+        f"finding the exact modes of {len(spans)} spans, {modes} of them (about 12 "
+        f"determinants and an SVD of {size}x{size} a mode, one of each timed now)",
         "fewer modes (modes=...) or fewer spans would cut it",
     )
 

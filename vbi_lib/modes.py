@@ -240,7 +240,7 @@ def beam_modes(bridge: Bridge, modes: int) -> BeamModes:
     if not isinstance(bridge, Bridge):
         raise TypeError(f"bridge must be a vbi.Bridge, got {type(bridge).__name__}")
     modes = check.integer("modes", modes, low=1, high=int(RANGES["modes"].hard[1]))
-    warn_mode_search(bridge.n_spans, modes)  # h23: a long search is announced (costs.py)
+    warn_mode_search(bridge.spans, modes)  # h23: a long search is announced (costs.py)
     spans = np.array(bridge.spans)
     kappa = natural_wavenumbers(spans, int(modes))
     coef = np.array([mode_coefficients(spans, k, bridge.mass_per_length) for k in kappa])
