@@ -29,6 +29,7 @@ import pytest
 import vbi_lib as vbi
 from vbi_lib import monitoring as mon
 from vbi_lib import reports, studies, widgets
+from vbi_lib._files import FileReadError
 from vbi_lib.profile_files import ProfileFileError
 from vbi_lib.ranges import MAX_NODES, RANGES, ranges_markdown
 from vbi_lib.vehicles import Axle, Convoy, QuarterCar, Tyre, VehicleSystem, hs20
@@ -126,6 +127,14 @@ def unix_socket(folder: Path) -> Path:
 
 
 _OPEN: list = []
+
+
+def assessment_pipe(folder: Path) -> Path:
+    """A data-set folder whose scenario table is a named pipe."""
+    import os
+
+    os.mkfifo(folder / "scenarios-239.csv")
+    return folder
 
 
 def link_to(folder: Path, target: str) -> Path:
@@ -302,6 +311,16 @@ ROWS = [
     row("save into a missing folder",
         lambda d: studies.save(pd.DataFrame({"daf": [1.0]}), d / "nowhere" / "s.csv"),
         FileNotFoundError, "path=", "nowhere", "does not exist"),
+    row("load a study from /dev/zero", lambda _: studies.load("/dev/zero.csv"), FileReadError,
+        "path='/dev/zero.csv'", "cannot be read"),
+    row("load a study from a named pipe", lambda d: studies.load(fifo(d)), FileReadError,
+        "pipe.csv", "named pipe"),
+    row("load a study larger than max_bytes",
+        lambda d: studies.load(d / "s.csv", max_bytes=4), FileReadError, "max_bytes=4",
+        files={"s.csv": "daf\n1.0\n"}),
+    row("an assessment table that is a named pipe",
+        lambda d: vbi.study_data.read_assessment_set(assessment_pipe(d)), FileReadError,
+        "scenarios-239.csv", "named pipe"),
     row("save onto a folder",
         lambda d: studies.save(pd.DataFrame({"daf": [1.0]}), mkdir(d / "s.csv")),
         IsADirectoryError, "s.csv", "is a folder"),

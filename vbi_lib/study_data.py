@@ -34,6 +34,7 @@ The data set itself has no licence: it is read from where it lies, never copied.
 
 from __future__ import annotations
 
+import io
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -41,6 +42,7 @@ from pathlib import Path
 import pandas as pd
 
 from . import units as u
+from ._files import read_text
 from .bridges import Bridge, reference_beam
 from .profile_files import read_profile
 from .profiles import Profile
@@ -409,7 +411,8 @@ def read_assessment_set(folder: str | Path) -> AssessmentSet:
         The folder, the table or a profile the table names does not exist (the message
         names the path).
     ValueError
-        The table lacks a column :func:`assessment_inputs` needs, or a profile file is
+        The table lacks a column :func:`assessment_inputs` needs, or is no regular text file
+        (a folder, a pipe, ...: :class:`vbi_lib._files.FileReadError`); a profile file is
         malformed (:class:`vbi_lib.ProfileFileError`, naming the file and line).
 
     Examples
@@ -426,11 +429,12 @@ def read_assessment_set(folder: str | Path) -> AssessmentSet:
             "scenarios-239.csv and profiles/ (the study's data, ../shared/data/seed-study)"
         )
     path = folder / "scenarios-239.csv"
-    if not path.is_file():
+    if not path.exists() and not path.is_symlink():
         raise FileNotFoundError(f"{str(path)!r} does not exist: the scenario table is missing")
+    text = read_text(path, "folder / 'scenarios-239.csv'")  # a regular file, capped, UTF-8/16
     try:
-        table = pd.read_csv(path)
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as error:
+        table = pd.read_csv(io.StringIO(text))
+    except (pd.errors.ParserError, pd.errors.EmptyDataError) as error:
         raise ValueError(f"{str(path)!r} is not a readable CSV table: {error}") from None
     missing = [c for c in SCENARIO_COLUMNS if c not in table.columns]
     if missing:
