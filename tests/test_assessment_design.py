@@ -1,4 +1,4 @@
-"""The study's assessment design rebuilt from its printed tables.
+"""The study's assessment design rebuilt from its printed tables (the one design of the library).
 
 References: the printed Tables 2.13.8-2.13.11 (beams, trucks, road spectra), the study's
 text (650 ft roads at 1 in; the longest path 600 ft), the spectrum fitted back from each
@@ -9,20 +9,19 @@ table: every one of its generated-road scenarios is in the design.
 from __future__ import annotations
 
 import numpy as np
-import pandas as pd
 import pytest
 
 import vbi_lib as vbi
 from vbi_lib import study_data as sd
 from vbi_lib import units as u
-from vbi_lib.assessment_design import ROAD_SPECTRA, published_assessment_set
+from vbi_lib.assessment_design import ROAD_SPECTRA, published_assessment_design
 
 LB_IN2 = u.lbf * u.inch**2
 
 
 @pytest.fixture(scope="module")
-def design() -> tuple[pd.DataFrame, dict[str, vbi.Profile]]:
-    return published_assessment_set()
+def design() -> sd.AssessmentSet:
+    return published_assessment_design()
 
 
 def test_the_full_factorial_of_the_printed_tables(design) -> None:  # noqa: ANN001
@@ -77,13 +76,44 @@ def test_the_study_set_is_inside_the_design(design, shared_data) -> None:  # noq
 
 def test_bad_input_is_named() -> None:
     with pytest.raises(ValueError, match=r"seeds=\(\) must be one or more different integers"):
-        published_assessment_set(seeds=())
+        published_assessment_design(seeds=())
     with pytest.raises(ValueError, match=r"seeds=\(1, 1\)"):
-        published_assessment_set(seeds=(1, 1))
+        published_assessment_design(seeds=(1, 1))
     with pytest.raises(TypeError, match="seeds=3 must be a list"):
-        published_assessment_set(seeds=3)
+        published_assessment_design(seeds=3)
     with pytest.raises(ValueError, match="length=152.4 m must cover the longest path"):
-        published_assessment_set(length=500 * u.ft)
-    one, roads = published_assessment_set(seeds=(7,))
+        published_assessment_design(length=500 * u.ft)
+    one, roads = published_assessment_design(seeds=(7,))
     assert len(one) == 144 and all(name.endswith("_7") for name in roads)
     assert np.isin(one.seed, [7]).all()
+
+
+def test_the_design_is_an_assessment_set_of_the_printed_trucks(design) -> None:  # noqa: ANN001
+    """Every Table 2.13.8 beam with its Table 2.13.9 truck and the 2.8 Hz truck on the twelve
+    ISO roads of Table 2.13.11, in the columns the model inputs are built from, as the
+    study's own set is read (an AssessmentSet)."""
+    table, roads = design
+    assert design.folder is None and "generated" in repr(design)
+    assert len(table) == 12 * 2 * 12 and len(roads) == 12
+    assert set(table.vehicle) == {
+        "10.5 Hz damped (10%)",
+        "4.5 Hz damped (10%)",
+        "2.5 Hz damped (10%)",
+        "2.8 Hz (20%)",
+    }
+    beams = sd.table_2_13_8()
+    assert table.groupby(["span_ft", "n_spans", "path"]).size().eq(24).all()
+    assert len(table.groupby(["span_ft", "n_spans", "path"])) == len(beams)
+    for name, road in roads.items():
+        assert road.name == name and road.elevation[0] == 0.0
+        assert road.length == pytest.approx(650 * u.ft)
+        assert road.spacing == pytest.approx(1 * u.inch)
+    # the roads are those of Profile.iso8608 with the stated parameters and seeds
+    again = vbi.Profile.iso8608(650 * u.ft, 1 * u.inch, c10=600e-6, waviness=3, seed=2)
+    np.testing.assert_allclose(
+        roads["ISO_C10-600e-06_w-3_2"].elevation, again.elevation - again.elevation[0]
+    )
+    bridges, trucks, _ = sd.assessment_inputs(table, roads)
+    slow = [t for t, v in zip(trucks, table.vehicle, strict=True) if v.startswith("2.8")]
+    assert {round(t.frequency_hz, 3) for t in slow} == {2.8}
+    assert {round(b.first_frequency_hz, 2) for b in bridges} == {9.95, 9.98, 3.99, 2.08}

@@ -29,6 +29,7 @@ import pytest
 import vbi_lib as vbi
 from vbi_lib import monitoring as mon
 from vbi_lib import reports, studies, widgets
+from vbi_lib._files import FileReadError
 from vbi_lib.profile_files import ProfileFileError
 from vbi_lib.ranges import MAX_NODES, RANGES, ranges_markdown
 from vbi_lib.vehicles import Axle, Convoy, QuarterCar, Tyre, VehicleSystem, hs20
@@ -105,6 +106,43 @@ def table(first: dict | None = None, **changes: object) -> pd.DataFrame:
 
 def explorer_control(name: str, value: object) -> None:
     widgets.CrossingExplorer(road="flat").controls[name].value = value
+
+
+def fifo(folder: Path) -> Path:
+    """A named pipe no one writes to: reading it would wait for ever."""
+    import os
+
+    path = folder / "pipe.csv"
+    os.mkfifo(path)
+    return path
+
+
+def unix_socket(folder: Path) -> Path:
+    """A Unix socket bound in ``folder`` (kept open while the test runs)."""
+    import socket
+
+    server = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    server.bind(str(folder / "sock.csv"))
+    _OPEN.append(server)
+    return folder / "sock.csv"
+
+
+_OPEN: list = []
+
+
+def assessment_pipe(folder: Path) -> Path:
+    """A data-set folder whose scenario table is a named pipe."""
+    import os
+
+    os.mkfifo(folder / "scenarios-239.csv")
+    return folder
+
+
+def link_to(folder: Path, target: str) -> Path:
+    """A symbolic link in ``folder`` to ``target``: the reader must judge what it names."""
+    link = folder / "link.csv"
+    link.symlink_to(target)
+    return link
 
 
 # ---------------------------------------------------------------------------- the table
@@ -217,6 +255,76 @@ ROWS = [
     row("an ERD sample interval of 1 km", lambda d: vbi.read_erd(d / "coarse.erd"),
         ProfileFileError, "coarse.erd", "sample interval 1000",
         files={"coarse.erd": erd("1", "3", interval="1000")}),
+    # ---- files: only regular files, of bounded size, in UTF-8 or UTF-16 (issue 23)
+    row("read_profile of /dev/zero", lambda _: vbi.read_profile("/dev/zero", "m"),
+        ProfileFileError, "/dev/zero", "is a character device", "not a regular file"),
+    row("read_erd of /dev/zero", lambda _: vbi.read_erd("/dev/zero"), ProfileFileError,
+        "/dev/zero", "is a character device"),
+    row("the explorers' profile path at /dev/zero",
+        lambda _: widgets.scenario._measured("/dev/zero", "in"), ProfileFileError,
+        "/dev/zero", "character device"),
+    row("read_profile of a named pipe", lambda d: vbi.read_profile(fifo(d), "m"),
+        ProfileFileError, "pipe.csv", "named pipe (FIFO"),
+    row("read_erd of a named pipe", lambda d: vbi.read_erd(fifo(d)), ProfileFileError,
+        "pipe.csv", "named pipe"),
+    row("read_profile of a socket", lambda d: vbi.read_profile(unix_socket(d), "m"),
+        ProfileFileError, "sock.csv", "is a socket"),
+    row("read_profile of a folder", lambda d: vbi.read_profile(d, "m"), ProfileFileError,
+        "is a directory"),
+    row("read_profile of a link to /dev/zero",
+        lambda d: vbi.read_profile(link_to(d, "/dev/zero"), "m"), ProfileFileError,
+        "link.csv", "character device"),
+    row("read_erd of a dangling link", lambda d: vbi.read_erd(link_to(d, str(d / "gone"))),
+        ProfileFileError, "link.csv", "cannot be read"),
+    row("a profile file larger than max_bytes",
+        lambda d: vbi.read_profile(d / "deck.csv", "in", max_bytes=10), ProfileFileError,
+        "deck.csv", "more than max_bytes=10", files={"deck.csv": "0,0\n1,0.5\n2,0.25\n"}),
+    row("an ERD file larger than max_bytes",
+        lambda d: vbi.read_erd(d / "run.erd", max_bytes=100), ProfileFileError, "run.erd",
+        "max_bytes=100", files={"run.erd": erd("1", "3")}),
+    row("max_bytes='1'", lambda d: vbi.read_profile(d / "deck.csv", "in", max_bytes="1"),
+        TypeError, "max_bytes='1'", files={"deck.csv": "0,0\n1,0.5\n"}),
+    row("max_bytes=0", lambda d: vbi.read_profile(d / "deck.csv", "in", max_bytes=0),
+        ValueError, "max_bytes=0", files={"deck.csv": "0,0\n1,0.5\n"}),
+    row("a profile file in UTF-32", lambda d: vbi.read_profile(d / "u32.csv", "in"),
+        ProfileFileError, "u32.csv", "UTF-32", files={"u32.csv": "0,0\n1,0.5\n".encode("utf-32")}),
+    row("a profile file in Latin-1", lambda d: vbi.read_profile(d / "l1.csv", "in"),
+        ProfileFileError, "l1.csv", "not UTF-8", "Latin-1", "line 1",
+        files={"l1.csv": "# d\xe9part\n0,0\n1,0.5\n".encode("latin-1")}),
+    row("a binary file as a profile", lambda d: vbi.read_profile(d / "b.csv", "in"),
+        ProfileFileError, "b.csv", "not a text file", "zero bytes",
+        files={"b.csv": b"0,0\n\x00\x01\x02\x03"}),
+    row("an ERD file in Latin-1", lambda d: vbi.read_erd(d / "l1.erd"), ProfileFileError,
+        "l1.erd", "Latin-1", files={"l1.erd": erd("1", "3").replace("demo", "d\xe9mo")
+                                    .encode("latin-1")}),
+    row("one column of decimal commas",
+        lambda d: vbi.read_profile(d / "comma.csv", "m"), ProfileFileError, "comma.csv",
+        "decimal commas", "decimal=", files={"comma.csv": "1,5\n2,5\n3,5\n4,5\n"}),
+    row("one column of decimal commas, some with leading zeros",
+        lambda d: vbi.read_profile(d / "comma.csv", "m"), ProfileFileError, "decimal commas",
+        files={"comma.csv": "0,05\n0,10\n0,25\n"}),
+    row("decimal=';'", lambda d: vbi.read_profile(d / "deck.csv", "m", decimal=";"),
+        ValueError, "decimal=';'", files={"deck.csv": "0,0\n1,0.5\n"}),
+    row("a path given as bytes", lambda _: vbi.read_profile(b"/dev/zero", "m"), TypeError,
+        "path=b'/dev/zero'"),
+    row("a zero character in a path", lambda _: vbi.read_profile("a\x00b.csv", "m"),
+        ProfileFileError, "'a\\x00b.csv'", "zero character"),
+    row("save into a missing folder",
+        lambda d: studies.save(pd.DataFrame({"daf": [1.0]}), d / "nowhere" / "s.csv"),
+        FileNotFoundError, "path=", "nowhere", "does not exist"),
+    row("load a study from /dev/zero", lambda _: studies.load("/dev/zero.csv"), FileReadError,
+        "path='/dev/zero.csv'", "cannot be read"),
+    row("load a study from a named pipe", lambda d: studies.load(fifo(d)), FileReadError,
+        "pipe.csv", "named pipe"),
+    row("load a study larger than max_bytes",
+        lambda d: studies.load(d / "s.csv", max_bytes=4), FileReadError, "max_bytes=4",
+        files={"s.csv": "daf\n1.0\n"}),
+    row("an assessment table that is a named pipe",
+        lambda d: vbi.study_data.read_assessment_set(assessment_pipe(d)), FileReadError,
+        "scenarios-239.csv", "named pipe"),
+    row("save onto a folder",
+        lambda d: studies.save(pd.DataFrame({"daf": [1.0]}), mkdir(d / "s.csv")),
+        IsADirectoryError, "s.csv", "is a folder"),
     # ---- flags and types: a bool is a bool, a number a number, everywhere alike
     row("coupled='False'", lambda _: simulate({"coupled": "False"}), TypeError,
         "coupled='False'"),
@@ -335,6 +443,11 @@ ROWS = [
 ]  # fmt: skip
 
 
+def mkdir(path: Path) -> Path:
+    path.mkdir()
+    return path
+
+
 def _files(folder: Path) -> dict[str, bytes]:
     return {str(p.relative_to(folder)): p.read_bytes() for p in folder.rglob("*") if p.is_file()}
 
@@ -350,7 +463,10 @@ def test_a_bad_input_is_refused_by_name_and_writes_nothing(
 ) -> None:
     monkeypatch.chdir(tmp_path)
     for name, text in case.files.items():
-        (tmp_path / name).write_text(text)
+        if isinstance(text, bytes):
+            (tmp_path / name).write_bytes(text)
+        else:
+            (tmp_path / name).write_text(text)
     before = _files(tmp_path)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", vbi.VbiWarning)  # a refusal is what is asserted
@@ -514,3 +630,397 @@ def test_a_declared_count_is_never_allocated(tmp_path: Path) -> None:
     finally:
         tracemalloc.stop()
     assert peak < 10e6
+
+
+# ---------------------------------------------------------------------------- dead workers
+@dataclass(frozen=True)
+class WorkerKiller:
+    """A road recipe whose worker process dies when it builds it: ``kill -9`` of itself, as
+    the out-of-memory killer does (in the test's own process it builds a flat road, so that
+    ``studies.validate`` can try it)."""
+
+    start: float = 0.0
+    end: float = 200.0
+    label: str = "kills its worker"
+
+    def build(self) -> vbi.Profile:
+        import multiprocessing
+        import os
+        import signal
+
+        if multiprocessing.parent_process() is not None:
+            os.kill(os.getpid(), signal.SIGKILL)
+        return vbi.Profile.flat(self.end - self.start, 0.05, self.start)
+
+
+@dataclass(frozen=True)
+class MarkedRoad:
+    """A flat road recipe that, built in a worker, leaves a file behind and takes a while
+    (so that a test knows when the workers are busy)."""
+
+    folder: str
+    key: int
+    start: float = 0.0
+    end: float = 200.0
+    label: str = "marked"
+
+    def build(self) -> vbi.Profile:
+        import multiprocessing
+        import time
+
+        if multiprocessing.parent_process() is not None:
+            (Path(self.folder) / f"built-{self.key}").touch()
+            time.sleep(0.3)
+        return vbi.Profile.flat(self.end - self.start, 0.05, self.start)
+
+
+def _spawn_pool(workers: int = 2) -> object:
+    import concurrent.futures as cf
+    import multiprocessing
+
+    return cf.ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"))
+
+
+def _marked_study(folder: Path, count: int) -> pd.DataFrame:
+    roads = [MarkedRoad(str(folder), k) for k in range(count)]
+    return pd.DataFrame([
+        {"bridge": bridge(), "vehicle": truck(), "profile": r, "speed": 20.0, "bridge_start": 50.0}
+        for r in roads
+    ])  # fmt: skip
+
+
+def _kill_when_busy(pids: Callable[[], list[int]], folder: Path, built: int) -> object:
+    """A thread that kills one worker with SIGKILL once ``built`` roads were built."""
+    import os
+    import signal
+    import threading
+    import time
+
+    def kill() -> None:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline:
+            if len(list(folder.glob("built-*"))) >= built and pids():
+                os.kill(pids()[0], signal.SIGKILL)
+                return
+            time.sleep(0.05)
+
+    thread = threading.Thread(target=kill, daemon=True)
+    thread.start()
+    return thread
+
+
+def test_a_worker_killed_once_loses_no_row(tmp_path: Path) -> None:
+    """kill -9 of one pool worker while it holds chunks (takes about 20 s: three pools
+    start).  Reference: the same study run serially; every row is kept and equal."""
+    table = _marked_study(tmp_path, 16)
+    pool = _spawn_pool()
+    try:
+        thread = _kill_when_busy(lambda: list(pool._processes), tmp_path, 3)
+        with pytest.warns(vbi.validity.WorkerLostWarning) as caught:
+            result = studies.run(table, pool, chunk_size=2)
+        thread.join(1)
+    finally:
+        pool.shutdown(cancel_futures=True)
+    message = " | ".join(str(w.message) for w in caught)
+    assert "worker" in message and "killed by signal 9" in message, message
+    assert "perhaps out of memory" in message and "__main__" not in message, message
+    assert "error" not in result.columns
+    serial = studies.run(table, "serial")
+    pd.testing.assert_frame_equal(result, serial)
+
+
+def test_a_chunk_whose_worker_dies_twice_keeps_nan_and_the_reason() -> None:
+    """A row whose road kills its worker each time: run again once, alone, then NaN with the
+    reason; the other rows finish (about 20 s)."""
+    rows = [{"profile": studies.FlatProfile(200.0, 0.05), "speed": s} for s in (15.0, 20.0)]
+    table = pd.DataFrame([
+        {"bridge": bridge(), "vehicle": truck(), "bridge_start": 50.0, **r}
+        for r in (rows[0], {"profile": WorkerKiller(), "speed": 18.0}, rows[1])
+    ])  # fmt: skip
+    pool = _spawn_pool()
+    try:
+        with (
+            pytest.warns(vbi.validity.WorkerLostWarning, match="perhaps out of memory"),
+            pytest.warns(vbi.validity.FailedRowsWarning, match="1 of 3 crossings failed"),
+        ):
+            result = studies.run(table, pool, chunk_size=1)
+    finally:
+        pool.shutdown(cancel_futures=True)
+    assert result["error"].isna().tolist() == [True, False, True]
+    reason = result["error"][1]
+    assert "again when it ran alone" in reason and "killed by signal 9" in reason, reason
+    assert "perhaps out of memory" in reason and "__main__" not in reason
+    assert np.isnan(result["daf"][1]) and np.isfinite(result["daf"][[0, 2]]).all()
+    alone = studies.run(table.iloc[[0, 2]], "serial")
+    np.testing.assert_array_equal(result["daf"][[0, 2]], alone["daf"])
+
+
+def test_a_dask_worker_killed_is_rescheduled(tmp_path: Path) -> None:
+    """kill -9 of a worker of a Dask LocalCluster: the cluster reruns its tasks; a row that
+    kills every worker that runs it gets the reason once the cluster gives up."""
+    distributed = pytest.importorskip("dask.distributed")
+    import dask
+
+    table = _marked_study(tmp_path, 12)
+    with (
+        dask.config.set({"distributed.scheduler.allowed-failures": 1}),
+        distributed.LocalCluster(
+            n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        thread = _kill_when_busy(lambda: list(client.run(__import__("os").getpid).values()),
+                                 tmp_path, 3)  # fmt: skip
+        result = studies.run(table, client.get_executor(), chunk_size=2)
+        thread.join(1)
+        assert not thread.is_alive()
+        assert "error" not in result.columns
+        pd.testing.assert_frame_equal(result, studies.run(table, "serial"))
+        killer = pd.concat([table.iloc[:1], table.iloc[:1].assign(profile=[WorkerKiller()])],
+                           ignore_index=True)  # fmt: skip
+        with pytest.warns(vbi.validity.FailedRowsWarning):
+            lost = studies.run(killer, client.get_executor(), chunk_size=1)
+    assert lost["error"].isna().tolist() == [True, False]
+    assert "workers died" in lost["error"][1] and "perhaps out of memory" in lost["error"][1]
+
+
+# ---------------------------------------------------------------------------- files read
+@pytest.mark.parametrize(
+    ("data", "name"),
+    [
+        ("0,0\n10,0.5\n".encode("utf-16"), "UTF-16 with a byte-order mark"),
+        (b"\xfe\xff" + "0,0\n10,0.5\n".encode("utf-16-be"), "UTF-16 big-endian"),
+        ("0,0\n10,0.5\n".encode("utf-16-le"), "UTF-16 without a byte-order mark"),
+        (b"\xef\xbb\xbf0,0\r\n10,0.5\r\n", "UTF-8 with a byte-order mark"),
+        (b"0;0\n10;0,5\n", "decimal commas, columns split by semicolons"),
+        (b"0\t0\n10\t0,5\n", "decimal commas, columns split by a tab"),
+        (b"# station elevation\n0 0\n10 0,5\n", "decimal commas, columns split by spaces"),
+    ],
+    ids=lambda v: v if isinstance(v, str) else "",
+)
+def test_utf16_and_decimal_commas_are_read(tmp_path: Path, data: bytes, name: str) -> None:
+    path = tmp_path / "p.csv"
+    path.write_bytes(data)
+    road = vbi.read_profile(path, unit="m")
+    np.testing.assert_array_equal(road.x, [0.0, 10.0])
+    np.testing.assert_array_equal(road.elevation, [0.0, 0.5])
+
+
+def test_decimal_says_which_mark_an_ambiguous_file_uses(tmp_path: Path) -> None:
+    """``1,5`` lines: one column of decimal commas, or two columns of whole numbers."""
+    path = tmp_path / "p.csv"
+    path.write_text("10,5\n20,5\n30,7\n")
+    with pytest.warns(vbi.OutsideValidityWarning, match="unevenness 0.667 m"):
+        pairs = vbi.read_profile(path, unit="m", decimal=".")  # a 2 m step: no road
+    np.testing.assert_array_equal(pairs.x, [10.0, 20.0, 30.0])
+    np.testing.assert_array_equal(pairs.elevation, [5.0, 5.0, 7.0])
+    path.write_text("1,5 0,25\n12,5 0,5\n")
+    commas = vbi.read_profile(path, unit="m", decimal=",")
+    np.testing.assert_array_equal(commas.x, [1.5, 12.5])
+    np.testing.assert_array_equal(commas.elevation, [0.25, 0.5])
+
+
+def test_a_utf16_erd_file_reads_as_its_utf8_twin(tmp_path: Path) -> None:
+    text = erd("1", "3")
+    (tmp_path / "a.erd").write_text(text)
+    (tmp_path / "b.erd").write_text(text, encoding="utf-16")
+    a, b = vbi.read_erd(tmp_path / "a.erd"), vbi.read_erd(tmp_path / "b.erd")
+    np.testing.assert_array_equal(a[0].elevation, b[0].elevation)
+    assert a.header == b.header
+
+
+def test_the_size_cap_is_stated_and_can_be_raised(tmp_path: Path) -> None:
+    from vbi_lib._files import MAX_FILE_BYTES, read_text
+
+    assert MAX_FILE_BYTES == 100 * 2**20
+    path = tmp_path / "p.csv"
+    path.write_text("0,0\n9,0.5\n")
+    with pytest.raises(ProfileFileError, match="holds 10 bytes, more than max_bytes=9"):
+        vbi.read_profile(path, unit="m", max_bytes=9)
+    assert vbi.read_profile(path, unit="m", max_bytes=10).x.size == 2
+    assert read_text(path, "profile.file", 10) == "0,0\n9,0.5\n"  # the helper for reports
+    with pytest.raises(ValueError, match="^profile.file='.*' is a directory"):
+        read_text(tmp_path, "profile.file")
+
+
+# ---------------------------------------------------------------------------- given roads
+def _deck(unit: str, tmp_path: Path) -> vbi.Profile:
+    """A 40 m deck sampled every 25 mm with a 25 mm joint at 20 m, written in millimetres,
+    read with ``unit``."""
+    lines = [f"{25 * i},{0 if i < 800 else 25}" for i in range(1601)]
+    (tmp_path / "deck.csv").write_text("\n".join(lines) + "\n")
+    return vbi.read_profile(tmp_path / "deck.csv", unit=unit, decimal=".")  # whole numbers
+
+
+def _crossings(road: vbi.Profile) -> dict[str, object]:
+    """A crossing of each vehicle model over a 10 m span that starts 20 m down ``road``
+    (a 16 m approach holds the HS20 wholly)."""
+    bridge = vbi.Bridge(10.0, 1, 2e9, 5e3)
+    cars = {"sprung mass": truck(), "quarter car": QuarterCar.from_frequencies(
+        4e3, 500.0, 1.5, 12.0), "HS20": hs20(14 * vbi.units.ft)}  # fmt: skip
+    out = {}
+    for name, car in cars.items():
+        for model in ("one-coordinate", "modal"):
+            out[f"{name}, {model}"] = vbi.simulate(
+                bridge, car, road, 10.0, 16.0, model=model, modes=3 if model == "modal" else None
+            )
+    return out
+
+
+def test_a_deck_in_mm_read_as_metres_is_named_and_every_crossing_says_so(tmp_path: Path) -> None:
+    """The issue's case: the 25 mm joint becomes a 25 m wall.  Reference: the same file read
+    in millimetres, a plausible deck that warns of nothing."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", vbi.OutsideValidityWarning)
+        _deck("mm", tmp_path)  # plausible: no warning
+    with pytest.warns(vbi.OutsideValidityWarning) as caught:
+        wall = _deck("m", tmp_path)
+    message = " | ".join(str(w.message) for w in caught)
+    assert "read_profile: profile 'deck' is not a plausible road" in message
+    assert "beyond the largest 1 m (a 1 m obstacle is a wall" in message
+    assert "millimetres read as metres" in message
+    assert "unit slip of both columns" in message and "unit='mm'" in message, message
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", vbi.VbiWarning)  # the 25 m sampling is warned of too
+        warnings.filterwarnings("error", ".*plausible road", vbi.OutsideValidityWarning)
+        runs = _crossings(wall)  # warned once, when read
+    for name, run in runs.items():
+        assert any("'deck' is not a plausible road" in n for n in run.notes), name
+
+
+@pytest.mark.filterwarnings("ignore::vbi_lib.ContactLossWarning")  # the truck flies off the kerb
+def test_a_profile_built_from_arrays_is_warned_of_by_its_first_crossing() -> None:
+    x = np.arange(0.0, 60.0, 0.025)
+    road = vbi.Profile(x, np.where((x > 25.0) & (x < 25.3), 0.8, 0.0), name="kerb in m")
+    with pytest.warns(vbi.OutsideValidityWarning, match="'kerb in m' is outside the intended"):
+        first = vbi.simulate(vbi.Bridge(10.0, 1, 2e9, 5e3), truck(), road, 10.0, 20.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", vbi.OutsideValidityWarning)  # not twice
+        batch = vbi.simulate_many(vbi.Bridge(10.0, 1, 2e9, 5e3), truck(), road, [10.0], 20.0)
+    assert any("unevenness 0.7" in n for n in first.notes), first.notes
+    assert np.isfinite(batch.daf[0, 0])
+
+
+def test_the_study_s_data_profiles_are_plausible(shared_data: Path) -> None:
+    """Reference: the files' stated units (../shared/data READMEs); none may be warned of."""
+    from vbi_lib.road_checks import road_notes
+
+    folder = shared_data / "profiles"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", vbi.OutsideValidityWarning)
+        roads = [vbi.read_profile(folder / f"i76-span{k}.csv", "in") for k in range(2, 7)]
+        roads.append(vbi.read_profile(folder / "sorel-profile-1.txt", "m"))
+        roads += list(vbi.read_erd(folder / "basic-2channel.erd"))
+        for path in sorted((shared_data / "seed-study" / "profiles").glob("*.csv")):
+            roads.append(vbi.read_profile(path, "in"))
+    assert len(roads) == 23 and not any(road_notes(r) for r in roads)
+
+
+def test_a_deck_with_elevations_in_inches_read_as_metres_is_named(shared_data: Path) -> None:
+    """The I-76 deck with its elevations (inches) read in metres: 39 times too large, outside
+    every intended range at once."""
+    with pytest.warns(vbi.OutsideValidityWarning) as caught:
+        vbi.read_profile(shared_data / "profiles" / "i76-span2.csv", "in", elevation_unit="m")
+    message = " | ".join(str(w.message) for w in caught)
+    assert "unit slip of the elevations" in message, message
+    assert "inches read as metres (39.37 times too large: elevation_unit='in')" in message
+
+
+# ---------------------------------------------------------------------------- vehicle notes
+VEHICLE_NOTES = [
+    ("a 0.6 m footprint", lambda: QuarterCar.from_frequencies(4e3, 500.0, 1.5, 12.0,
+                                                              footprint=0.6), "footprint=0.6"),
+    ("an 8 kg wheel", lambda: QuarterCar.from_frequencies(300.0, 8.0, 1.5, 12.0),
+     "unsprung_mass=8"),
+    ("an axle 40 m behind the first", lambda: vbi.vehicles.IndependentAxles(
+        [Axle(0.0, 1e5, 4e6, 2e4), Axle(40.0, 1e5, 4e6, 2e4)]), "axle 2: offset=40"),
+    ("a tyre of 8 kg on a truck", lambda: vbi.vehicles.RigidTruck(
+        [Axle(0.0, 6e4, 3e5, 1e4), Axle(5.0, 1.4e5, 7e5, 2e4, Tyre(8.0, 1e6))], 1.2e5),
+     "axle 2: unsprung_mass=8"),
+    ("an HS20 damped at 60 %", lambda: hs20(suspension_damping_ratio=0.6),
+     "suspension_damping_ratio=0.6"),
+    ("a sprung mass of 50 kg", lambda: vbi.Vehicle.from_frequency(50.0, 3.0, 0.1), "mass=50"),
+    ("a convoy with a heavy second truck", lambda: Convoy(
+        [truck(), vbi.Vehicle.from_frequency(3e5, 3.0, 0.1)], [30.0]), "vehicle 2: mass=300000"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("name", "make", "says"), VEHICLE_NOTES, ids=[v[0] for v in VEHICLE_NOTES])
+def test_what_a_vehicle_warned_of_is_in_every_result(name: str, make: Callable, says: str) -> None:
+    """Whatever a vehicle's constructors warn of is a note of every crossing (both models)
+    and a column of every study (with sections or not)."""
+    with pytest.warns(vbi.OutsideValidityWarning) as caught:
+        vehicle = make()
+        vbi.vehicles.as_system(vehicle)
+    warned = " | ".join(str(w.message) for w in caught)
+    assert says.split(": ")[-1] in warned, warned
+    road = vbi.Profile.flat(200.0, 0.05)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", vbi.VbiWarning)
+        for model in ("one-coordinate", "modal"):
+            run = vbi.simulate(bridge(), vehicle, road, 20.0, 60.0, model=model,
+                               modes=3 if model == "modal" else None)  # fmt: skip
+            assert any(says in n for n in run.notes), (model, run.notes)
+        table = studies.grid(bridge(), vehicle, road, [20.0, 25.0], 60.0)
+        for sections in (None, [15.0]):
+            result = studies.run(table, "serial", sections=sections)
+            assert result["vehicle_notes"].str.contains(says, regex=False).all(), sections
+
+
+def test_a_vehicle_inside_every_range_has_no_notes() -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", vbi.OutsideValidityWarning)
+        for vehicle in (truck(), hs20(), QuarterCar.from_frequencies(4e3, 500.0, 1.5, 12.0)):
+            assert vbi.vehicles.as_system(vehicle).notes == ()
+        run = vbi.simulate(bridge(), hs20(), vbi.Profile.flat(200.0, 0.05), 20.0, 60.0)
+    assert not any("outside the intended" in n for n in run.notes)
+
+
+# ---------------------------------------------------------------------------- smaller ones
+def test_free_vibration_past_the_end_of_the_road_is_noted() -> None:
+    road = vbi.Profile.harmonic(90.0, 0.05, 10.0, 0.005)
+    inside = simulate({"free_vibration": 0.2}, profile=road, bridge_start=50.0)
+    assert not any("past the end of the road" in n for n in inside.notes)
+    past = simulate({"free_vibration": 2.0}, profile=road, bridge_start=50.0)
+    note = next(n for n in past.notes if "past the end of the road" in n)
+    assert "went 30 m past" in note and "free_vibration=2 s" in note, note
+    assert past.position[-1] == pytest.approx(120.0)
+
+
+def test_a_bridge_at_exactly_the_frequency_limit_is_accepted() -> None:
+    """1000 Hz is allowed; the EI computed from it lands an ulp above and was refused,
+    blaming the units.  Just beyond the limit the message asks for another EI or mass."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", vbi.OutsideValidityWarning)
+        for span in (1.0, 7.3, 30.0, 100.0):
+            beam = vbi.Bridge.from_frequency(span, 1, 8000.0, 1000.0)
+            assert beam.first_frequency_hz == pytest.approx(1000.0, rel=1e-12)
+        for span in (7.3, 30.0, 100.0):
+            low = vbi.Bridge.from_frequency(span, 1, 8000.0, 0.05)
+            assert low.first_frequency_hz == pytest.approx(0.05, rel=1e-12)
+        with pytest.raises(ValueError, match="first_frequency_hz=1000.5") as near:
+            vbi.Bridge(30.0, 1, 8000.0 * (2 * math.pi * 1000.5) ** 2 * 30.0**4 / math.pi**4,
+                       8000.0)  # fmt: skip
+        assert "units" not in str(near.value) and "adjust EI" in str(near.value)
+        with pytest.raises(ValueError, match="check their units"):
+            vbi.Bridge(30.0, 1, 1e18, 1.0)
+
+
+def test_a_long_mode_search_or_crossing_is_announced(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The estimate warns before the work: a mode search whose timed pieces (a count, a
+    determinant, an SVD with its quadrature) take 50 ms each (monkeypatched: on the shared
+    machine they take 1 to 300 ms with its load), and a modal crossing of 2e6 steps with 200
+    modes (estimated 100 s: nothing runs past the warning, which the test makes an error)."""
+    from vbi_lib import costs
+
+    monkeypatch.setattr(costs, "_slowest", lambda work: 0.05)  # each piece of work: 50 ms
+    spans = [20.0 + i % 3 for i in range(50)]
+    with pytest.warns(vbi.validity.CostWarning, match=r"50 spans, 200 of them.*about 4 min"):
+        costs.warn_mode_search(spans, 200)  # 200 x (1 + 12 + 9) x 50 ms = 220 s
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", vbi.validity.CostWarning)
+        costs.warn_mode_search(spans[:2], 200)  # two spans: seconds, not timed
+        with pytest.raises(vbi.validity.CostWarning, match=r"2,000,001 time steps, 200 modes"):
+            simulate({"model": "modal", "modes": 200, "dt": 2e-6})
+        with pytest.raises(vbi.validity.CostWarning, match="finding the exact modes of 50"):
+            vbi.modes.beam_modes(vbi.Bridge.continuous(spans, EI=1e10, mass_per_length=5e3), 199)

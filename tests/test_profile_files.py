@@ -42,11 +42,11 @@ def test_units_by_name_or_factor_and_separate_elevation_unit(tmp_path: Path) -> 
     same = vbi.read_profile(path, unit=u.ft, elevation_unit="mm")
     np.testing.assert_allclose(same.x, feet.x)
     header = tmp_path / "h.csv"
-    header.write_text("distance,elevation\n0,0\n1,1,\n")
+    header.write_text("distance,elevation\n0,0\n1,0.01,\n")
     assert vbi.read_profile(header, unit="m", skip_rows=1).x.size == 2
     bom = tmp_path / "bom.csv"
-    bom.write_bytes(b"\xef\xbb\xbf0,0\r\n1,2\r\n")
-    np.testing.assert_allclose(vbi.read_profile(bom, unit="m").elevation, [0.0, 2.0])
+    bom.write_bytes(b"\xef\xbb\xbf0,0\r\n10,0.2\r\n")
+    np.testing.assert_allclose(vbi.read_profile(bom, unit="m").elevation, [0.0, 0.2])
     with pytest.raises(ValueError, match="unit='furlong'"):
         vbi.read_profile(path, unit="furlong")
 
@@ -59,7 +59,7 @@ def test_units_by_name_or_factor_and_separate_elevation_unit(tmp_path: Path) -> 
         ("0,0\n1,abc\n", 2, "elevation 'abc' is not a number"),
         ("0,0\nx,1\n", 2, "station 'x' is not a number"),
         ("0,0\n1,0\n0.5,0\n", 3, "does not increase"),
-        ("0,0\n1,0\n1,0\n", 3, "does not increase"),
+        ("0,0\n1,0.5\n1,0\n", 3, "does not increase"),
         ("0,0\n1,nan\n", 2, "not a finite number"),
         ("0,0\n1,,0\n", 2, "expected 2 columns"),
     ],

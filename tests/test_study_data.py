@@ -136,37 +136,6 @@ def test_reported_fe_tables_are_consistent_as_printed() -> None:
     assert decisions.loc["time step", "selection"] == "0.0015 s"
 
 
-def test_published_design_crosses_the_printed_tables() -> None:
-    """Every Table 2.13.8 beam with its Table 2.13.9 truck and the 2.8 Hz truck on the twelve
-    ISO roads of Table 2.13.11, in the columns the model inputs are built from."""
-    design = sd.published_assessment_design()
-    table, roads = design
-    assert design.folder is None and "generated" in repr(design)
-    assert len(table) == 12 * 2 * 12 and len(roads) == 12
-    assert set(table.vehicle) == {
-        "10.5 Hz damped (10%)",
-        "4.5 Hz damped (10%)",
-        "2.5 Hz damped (10%)",
-        "2.8 Hz (20%)",
-    }
-    beams = sd.table_2_13_8()
-    assert table.groupby(["span_ft", "n_spans", "path"]).size().eq(24).all()
-    assert len(table.groupby(["span_ft", "n_spans", "path"])) == len(beams)
-    for name, road in roads.items():
-        assert road.name == name and road.elevation[0] == 0.0
-        assert road.length == pytest.approx(650 * u.ft)
-        assert road.spacing == pytest.approx(1 * u.inch)
-    # the roads are those of Profile.iso8608 with the stated parameters and seeds
-    again = vbi.Profile.iso8608(650 * u.ft, 1 * u.inch, c10=600e-6, waviness=3, seed=2)
-    np.testing.assert_allclose(
-        roads["ISO_C10-600e-06_w-3_2"].elevation, again.elevation - again.elevation[0]
-    )
-    bridges, trucks, _ = sd.assessment_inputs(table, roads)
-    slow = [t for t, v in zip(trucks, table.vehicle, strict=True) if v.startswith("2.8")]
-    assert {round(t.frequency_hz, 3) for t in slow} == {2.8}
-    assert {round(b.first_frequency_hz, 2) for b in bridges} == {9.95, 9.98, 3.99, 2.08}
-
-
 def test_tables_are_fresh_copies() -> None:
     table = sd.table_2_13_8()
     table.loc[1, "k_mid_lbf_per_in"] = 0.0

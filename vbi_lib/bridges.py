@@ -37,7 +37,7 @@ from functools import cached_property, lru_cache
 from . import _validation as check
 from . import display
 from .continuous_beams import natural_wavenumbers, support_stations
-from .ranges import check_range
+from .ranges import RANGES, check_range, within_rounding
 
 
 @dataclass(frozen=True)
@@ -121,12 +121,16 @@ class Bridge:
         object.__setattr__(
             self, "damping_ratio", check_range("bridge_damping_ratio", zeta, "damping_ratio")
         )
+        frequency = within_rounding("bridge_frequency", self.first_frequency_hz)
         try:
-            check_range("bridge_frequency", self.first_frequency_hz, "first_frequency_hz")
+            check_range("bridge_frequency", frequency, "first_frequency_hz")
         except ValueError as exc:
+            low, high = RANGES["bridge_frequency"].hard
+            far = not low / 10 <= frequency <= 10 * high  # a unit slip, not a near miss
+            hint = "check their units" if far else "adjust EI or the mass per length"
             raise ValueError(
                 f"{exc}: EI={self.EI:.4g} N m^2 and mass_per_length={self.mass_per_length:.4g} "
-                f"kg/m over spans {self.spans} m give no beam a vehicle crosses; check their units"
+                f"kg/m over spans {self.spans} m give no beam a vehicle crosses; {hint}"
             ) from None
 
     @classmethod

@@ -48,6 +48,7 @@ from scipy.optimize import brentq, minimize_scalar
 from . import _validation as check
 from .bridges import Bridge
 from .continuous_beams import mode_coefficients, natural_wavenumbers, shape_derivatives
+from .costs import warn_mode_search
 from .ranges import RANGES
 
 __all__ = [
@@ -239,6 +240,7 @@ def beam_modes(bridge: Bridge, modes: int) -> BeamModes:
     if not isinstance(bridge, Bridge):
         raise TypeError(f"bridge must be a vbi.Bridge, got {type(bridge).__name__}")
     modes = check.integer("modes", modes, low=1, high=int(RANGES["modes"].hard[1]))
+    warn_mode_search(bridge.spans, modes)  # h23: a long search is announced (costs.py)
     spans = np.array(bridge.spans)
     kappa = natural_wavenumbers(spans, int(modes))
     coef = np.array([mode_coefficients(spans, k, bridge.mass_per_length) for k in kappa])

@@ -10,8 +10,15 @@ in metres):
 
 Both check the whole file before making a profile: a malformed file raises
 :class:`ProfileFileError` (a ``ValueError``) naming the file, the line and the fault, and
-nothing is half read.  No equation of the study is involved; the sampling the study asks of a
-profile is its equation (32), :func:`vbi_lib.profiles.max_sample_spacing`.
+nothing is half read.  Both open only regular files of at most ``max_bytes``
+(:data:`vbi_lib._files.MAX_FILE_BYTES`, 100 MiB, by default), in UTF-8 or UTF-16
+(:mod:`vbi_lib._files`), and say what else they were given: a directory, a device, a named
+pipe, a socket, another encoding.  A profile read is checked for plausibility
+(:mod:`vbi_lib.road_checks`): a road feature higher, or a slope steeper, than a road has, or
+a roughness beyond ISO 8608's classes, is warned about with the likely unit slip (a deck in
+millimetres read as metres), and every crossing on it says so in its ``notes``.  No
+equation of the study is involved; the sampling the study asks of a profile is its equation
+(32), :func:`vbi_lib.profiles.max_sample_spacing`.
 """
 
 from __future__ import annotations
@@ -24,8 +31,10 @@ from pathlib import Path
 import numpy as np
 
 from . import _validation as check
+from ._files import MAX_FILE_BYTES, FileReadError, read_text
 from .profiles import Profile
 from .ranges import RANGES
+from .road_checks import warn_implausible
 
 #: Length units accepted by name by the readers [m per unit].
 LENGTH_UNITS = {
@@ -47,7 +56,8 @@ class ProfileFileError(ValueError):
     """A profile file that cannot be read; the message names the file, the line and the fault."""
 
     def __init__(self, path: str | Path, line: int | None, problem: str) -> None:
-        where = f"{path}" if line is None else f"{path}, line {line}"
+        shown = str(path) if str(path).isprintable() else repr(str(path))  # a zero character
+        where = shown if line is None else f"{shown}, line {line}"
         super().__init__(f"{where}: {problem}")
         self.path = str(path)
         self.line = line
@@ -75,6 +85,52 @@ def _length_unit(name: str, unit: float | str) -> float:
 
 
 _SPLIT = re.compile(r"\s*[,;\t]\s*|\s+")
+#: Separators other than the comma (a file with decimal commas separates its columns so).
+_SPLIT_NO_COMMA = re.compile(r"\s*[;\t]\s*|\s+")
+#: A line of two whole numbers joined by one comma: ``1,5`` is 1 and 5, or one 1.5.
+_COMMA_PAIR = re.compile(r"[+-]?\d+,\d+")
+
+
+def _text(path: Path, max_bytes: int) -> str:
+    """The file's text, through the safe reader; its refusal as a :class:`ProfileFileError`."""
+    try:
+        return read_text(path, "path", max_bytes)
+    except FileReadError as exc:
+        raise ProfileFileError(path, None, exc.problem) from None
+
+
+def _decimal(lines: list[tuple[int, str]], decimal: str | None, path: Path) -> str:
+    """The decimal mark of a two-column file: ``decimal`` if given, else found from the text.
+
+    A file without a decimal point whose every line splits on semicolons, tabs or spaces
+    into two cells, some with a comma, has decimal commas (``0,5;1,25``).  A file whose every
+    line is two whole numbers joined by a comma (``1,5``) is ambiguous (one column of decimal
+    commas, or two columns of whole numbers): it is refused, asking for ``decimal``.
+    """
+    if decimal is not None:
+        if decimal not in (".", ","):
+            raise ValueError(
+                f"decimal={decimal!r} must be '.' or ',' (or None: found from the file)"
+            )
+        return decimal
+    if len(lines) < 2 or any("." in line for _, line in lines):
+        return "."
+    cells = [_SPLIT_NO_COMMA.split(line) for _, line in lines]
+    if all(len(c) == 2 for c in cells) and any("," in cell for c in cells for cell in c):
+        return ","
+    if all(_COMMA_PAIR.fullmatch(line) for _, line in lines):
+        number, first = lines[0]
+        raise ProfileFileError(
+            path,
+            number,
+            f"{first!r}: every line is two whole numbers joined by a comma and the file has no "
+            "decimal point, which is what one column of numbers with decimal commas looks like "
+            f"({first.replace(',', '.')} written {first}); a profile needs two columns, station "
+            "and elevation: write decimal points, or separate decimal-comma columns with ';', "
+            "a tab or spaces (then decimal=',' reads them), or pass decimal='.' if the comma "
+            "separates two columns of whole numbers",
+        )
+    return "."
 
 
 def _number(path: Path, line: int, cell: str, what: str) -> float:
@@ -93,6 +149,9 @@ def read_profile(
     elevation_unit: float | str | None = None,
     skip_rows: int = 0,
     name: str | None = None,
+    *,
+    decimal: str | None = None,
+    max_bytes: int = MAX_FILE_BYTES,
 ) -> Profile:
     """Read a measured profile from a two-column text file: station, elevation.
 
@@ -100,6 +159,12 @@ def read_profile(
     with ``#`` are ignored.  Stations must increase strictly.  The whole file is checked
     before a :class:`Profile` is made, so a bad file raises :class:`ProfileFileError` (a
     ``ValueError``) naming the file, the line and the fault, and nothing is half read.
+    Decimal commas are read when the columns are separated otherwise (``0,5;1,25``); a file
+    of lines such as ``1,5`` (one column with decimal commas, or two of whole numbers) is
+    refused unless ``decimal`` says which.  Only a regular file of at most ``max_bytes`` in
+    UTF-8 or UTF-16 is read (:func:`vbi_lib._files.read_text`).  The profile read is checked
+    for plausibility (:func:`vbi_lib.road_checks.road_notes`) and warned about, naming the
+    likely unit slip.
 
     Parameters
     ----------
@@ -114,16 +179,28 @@ def read_profile(
         Lines to skip at the top (a header row).
     name
         Name of the profile; the file's stem by default.
+    decimal
+        The decimal mark, ``"."`` or ``","``; ``None`` (default) finds it from the file.
+    max_bytes
+        The largest file read [bytes] (:data:`vbi_lib._files.MAX_FILE_BYTES`, 100 MiB).
 
     Raises
     ------
     TypeError
-        ``path`` that is not a path, ``skip_rows`` that is not an int, ``unit`` that is
-        neither a name nor a number.
+        ``path`` that is not a path, ``skip_rows`` or ``max_bytes`` that is not an int,
+        ``unit`` that is neither a name nor a number.
     ProfileFileError
-        A file that cannot be read or is malformed (a ``ValueError``).
+        A file that cannot be read or is malformed (a ``ValueError``): missing, a directory,
+        device, named pipe or socket, larger than ``max_bytes``, not UTF-8 or UTF-16 text,
+        ambiguous decimal commas, a bad line.
     ValueError
-        An unknown unit name, a factor not > 0, ``skip_rows < 0``.
+        An unknown unit name, a factor not > 0, ``skip_rows < 0``, a bad ``decimal``.
+
+    Warns
+    -----
+    OutsideValidityWarning
+        A profile whose unevenness, slope or roughness is outside what roads have
+        (:func:`vbi_lib.road_checks.road_notes`), with the likely unit slip.
 
     Examples
     --------
@@ -145,20 +222,15 @@ def read_profile(
     skip_rows = check.integer("skip_rows", skip_rows, low=0)
     if name is not None and not isinstance(name, str):
         raise TypeError(f"name={name!r} must be text or None, not {type(name).__name__}")
-    try:
-        text = path.read_text(encoding="utf-8-sig")  # tolerate a byte-order mark
-    except OSError as exc:
-        raise ProfileFileError(path, None, f"cannot be read ({exc.strerror or exc})") from None
-    except UnicodeDecodeError:
-        raise ProfileFileError(path, None, "is not a text file") from None
+    text = _text(path, max_bytes)
+    data = [(number, raw.strip()) for number, raw in enumerate(text.splitlines(), start=1)]
+    data = [(n, line) for n, line in data if n > skip_rows and line and not line.startswith("#")]
+    comma = _decimal(data, decimal, path) == ","
     stations: list[float] = []
     heights: list[float] = []
     lines: list[int] = []
-    for number, raw in enumerate(text.splitlines(), start=1):
-        line = raw.strip()
-        if number <= skip_rows or not line or line.startswith("#"):
-            continue
-        cells = _SPLIT.split(line)
+    for number, line in data:
+        cells = _SPLIT_NO_COMMA.split(line.replace(",", ".")) if comma else _SPLIT.split(line)
         if cells and cells[-1] == "":
             cells.pop()  # a trailing separator
         if len(cells) != 2:
@@ -181,11 +253,13 @@ def read_profile(
         raise ProfileFileError(
             path, None, f"holds {len(stations)} sample(s); a profile needs at least two"
         )
-    return Profile(
+    profile = Profile(
         np.asarray(stations) * scale_x,
         np.asarray(heights) * scale_z,
         name=path.stem if name is None else name,
     )
+    warn_implausible(profile, reader="read_profile")
+    return profile
 
 
 @dataclass(frozen=True, eq=False)
@@ -229,7 +303,7 @@ class ErdFile:
         )
 
 
-def read_erd(path: str | Path) -> ErdFile:
+def read_erd(path: str | Path, *, max_bytes: int = MAX_FILE_BYTES) -> ErdFile:
     """Read a profile file in the ERD v2 text format (profilers, ProVAL, the RoadRuf tools).
 
     Layout: line 1 ``ERDFILEV2.00``; line 2, comma separated, the number of channels, the
@@ -241,7 +315,10 @@ def read_erd(path: str | Path) -> ErdFile:
 
     Anything else (another version, a binary layout, a missing ``END``, a wrong number of
     rows or columns, a non-numeric cell, an unknown unit) raises :class:`ProfileFileError`
-    naming the file and the line; nothing is half read.
+    naming the file and the line; nothing is half read.  Only a regular file of at most
+    ``max_bytes`` (:data:`vbi_lib._files.MAX_FILE_BYTES`, 100 MiB, by default) in UTF-8 or
+    UTF-16 is read.  Each channel is checked for plausibility as :func:`read_profile`'s
+    profile is (a warning naming the likely unit slip).
 
     Returns
     -------
@@ -264,13 +341,12 @@ def read_erd(path: str | Path) -> ErdFile:
     """
     path = _path(path)
     try:
-        lines = path.read_text(encoding="utf-8-sig").splitlines()
-    except OSError as exc:
-        raise ProfileFileError(path, None, f"cannot be read ({exc.strerror or exc})") from None
-    except UnicodeDecodeError:
-        raise ProfileFileError(
-            path, None, "is not a text file (binary ERD layouts are not supported)"
-        ) from None
+        lines = read_text(path, "path", max_bytes).splitlines()
+    except FileReadError as exc:
+        problem = exc.problem
+        if "not a text file" in exc.problem:
+            problem += " (binary ERD layouts are not supported)"
+        raise ProfileFileError(path, None, problem) from None
     if not lines or lines[0].strip()[:12] != "ERDFILEV2.00":
         first = lines[0].strip()[:20] if lines else ""
         raise ProfileFileError(path, 1, f"starts with {first!r}, not 'ERDFILEV2.00' (ERD v2)")
@@ -378,6 +454,8 @@ def read_erd(path: str | Path) -> ErdFile:
     data = np.array(values, dtype=float).reshape(n_samples, n_channels)
     x = interval * np.arange(n_samples)
     channels = tuple(Profile(x, data[:, j] * scales[j], name=names[j]) for j in range(n_channels))
+    for channel in channels:
+        warn_implausible(channel, reader="read_erd")
     return ErdFile(channels, header, interval, str(path))
 
 

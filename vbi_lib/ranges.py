@@ -34,6 +34,7 @@ __all__ = [
     "outside_note",
     "ranges_markdown",
     "warn_outside",
+    "within_rounding",
 ]
 
 
@@ -495,6 +496,21 @@ def check_range(key: str, value: object, name: str | None = None, *, warn: bool 
         if note:
             warn_outside(note)
     return number
+
+
+def within_rounding(key: str, value: float, rel: float = 1e-9) -> float:
+    """``value`` moved onto the nearer hard limit of ``key`` when it misses it by rounding
+    only (relative ``rel``): a quantity derived from others (a frequency from EI, mass and
+    span) lands a few ulps off a limit its inputs were chosen to meet.
+
+    >>> within_rounding("bridge_frequency", 1000.0000000000001)
+    1000.0
+    """
+    low, high = RANGES[key].hard
+    for limit in (low, high):
+        if math.isfinite(limit) and abs(value - limit) <= rel * abs(limit):
+            return float(limit)
+    return value
 
 
 def ranges_markdown() -> str:

@@ -25,14 +25,16 @@ a :class:`vbi_lib.Bridge`, a :class:`vbi_lib.Vehicle` and a :class:`vbi_lib.Prof
 In every scenario the truck starts at station 0 and drives at 720 in/s onto a bridge that
 starts at 3840 in (:data:`ASSESSMENT_SPEED`, :data:`ASSESSMENT_BRIDGE_START`).
 
-Without the data set, :func:`published_assessment_design` builds the same design from the
-printed tables (Tables 2.13.8 to 2.13.11) on roads it generates; it has no FE results.
+Without the data set, :func:`vbi_lib.assessment_design.published_assessment_design` builds
+the same design from the printed tables (Tables 2.13.8 to 2.13.11) on roads it generates; it
+has no FE results.
 
 The data set itself has no licence: it is read from where it lies, never copied.
 """
 
 from __future__ import annotations
 
+import io
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -40,6 +42,7 @@ from pathlib import Path
 import pandas as pd
 
 from . import units as u
+from ._files import read_text
 from .bridges import Bridge, reference_beam
 from .profile_files import read_profile
 from .profiles import Profile
@@ -50,7 +53,6 @@ __all__ = [
     "ASSESSMENT_SPEED",
     "AssessmentSet",
     "assessment_inputs",
-    "published_assessment_design",
     "read_assessment_set",
     "table_2_13_1",
     "table_2_13_2",
@@ -365,7 +367,8 @@ class AssessmentSet:
     profiles
         The roads by file name, stations and elevations in metres, first elevation zero.
     folder
-        The folder read (None for :func:`published_assessment_design`).
+        The folder read (None for
+        :func:`vbi_lib.assessment_design.published_assessment_design`).
     """
 
     table: pd.DataFrame = field(repr=False)
@@ -408,7 +411,8 @@ def read_assessment_set(folder: str | Path) -> AssessmentSet:
         The folder, the table or a profile the table names does not exist (the message
         names the path).
     ValueError
-        The table lacks a column :func:`assessment_inputs` needs, or a profile file is
+        The table lacks a column :func:`assessment_inputs` needs, or is no regular text file
+        (a folder, a pipe, ...: :class:`vbi_lib._files.FileReadError`); a profile file is
         malformed (:class:`vbi_lib.ProfileFileError`, naming the file and line).
 
     Examples
@@ -425,11 +429,12 @@ def read_assessment_set(folder: str | Path) -> AssessmentSet:
             "scenarios-239.csv and profiles/ (the study's data, ../shared/data/seed-study)"
         )
     path = folder / "scenarios-239.csv"
-    if not path.is_file():
+    if not path.exists() and not path.is_symlink():
         raise FileNotFoundError(f"{str(path)!r} does not exist: the scenario table is missing")
+    text = read_text(path, "folder / 'scenarios-239.csv'")  # a regular file, capped, UTF-8/16
     try:
-        table = pd.read_csv(path)
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as error:
+        table = pd.read_csv(io.StringIO(text))
+    except (pd.errors.ParserError, pd.errors.EmptyDataError) as error:
         raise ValueError(f"{str(path)!r} is not a readable CSV table: {error}") from None
     missing = [c for c in SCENARIO_COLUMNS if c not in table.columns]
     if missing:
@@ -447,64 +452,6 @@ def read_assessment_set(folder: str | Path) -> AssessmentSet:
         road = read_profile(file, unit="in", name=str(name))
         profiles[str(name)] = Profile(road.x, road.elevation - road.elevation[0], name=road.name)
     return AssessmentSet(table, profiles, folder)
-
-
-def published_assessment_design(seed: int = 1) -> AssessmentSet:
-    """The assessment's design from the printed tables, on roads generated here (no FE DAFs).
-
-    Every beam of Table 2.13.8 with its matching truck (Table 2.13.9) and the 2.8 Hz truck
-    (Table 2.13.10), on each of twelve ISO 8608 roads of Table 2.13.11 (C10 300e-6 and
-    600e-6 m^3, waviness 2, 3 and 4, two phase draws each, 650 ft at 1 in): 288 scenarios
-    in the columns :func:`assessment_inputs` reads.  The study's own set (239 of these
-    combinations on its own roads, with FE results) is :func:`read_assessment_set`.
-
-    Parameters
-    ----------
-    seed
-        Seed of the first phase draw (the second is ``seed + 1``).
-
-    Returns
-    -------
-    AssessmentSet
-        ``folder`` is None: nothing was read.
-
-    Examples
-    --------
-    >>> design = published_assessment_design()
-    >>> len(design), len(design.profiles), design.table.vehicle.nunique()
-    (288, 12, 4)
-    """
-    roads = {}
-    for c10 in (300e-6, 600e-6):
-        for waviness in (2, 3, 4):
-            for draw in (1, 2):
-                name = f"ISO_C10-{c10 * 1e6:.0f}e-06_w-{waviness}_{draw}"
-                p = Profile.iso8608(
-                    650 * u.ft, 1 * u.inch, c10=c10, waviness=waviness, seed=seed + draw - 1
-                )
-                roads[name] = Profile(p.x, p.elevation - p.elevation[0], name=name)
-    slow = table_2_13_10().iloc[0]
-    rows = []
-    for beam in table_2_13_8().itertuples():
-        own = table_2_13_9().loc[beam.span_ft]
-        trucks = {f"{own.damped_frequency_hz:g} Hz damped (10%)": own, "2.8 Hz (20%)": slow}
-        for label, truck in trucks.items():
-            rows += [
-                {
-                    "span_ft": beam.span_ft,
-                    "n_spans": beam.n_spans,
-                    "path": beam.path,
-                    "k_mid_lbf_per_in": beam.k_mid_lbf_per_in,
-                    "bridge_f1_hz": beam.f1_hz,
-                    "vehicle": label,
-                    "vehicle_mass_slinch": truck.mass_slinch,
-                    "vehicle_k_lbf_per_in": truck.k_lbf_per_in,
-                    "vehicle_c_lbf_s_per_in": truck.c_lbf_s_per_in,
-                    "profile": name,
-                }
-                for name in roads
-            ]
-    return AssessmentSet(pd.DataFrame(rows), roads, None)
 
 
 def assessment_inputs(

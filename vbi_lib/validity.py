@@ -21,9 +21,11 @@ __all__ = [
     "LOST_CONTACT_LABEL",
     "ContactFlags",
     "ContactLossWarning",
+    "CostWarning",
     "FailedRowsWarning",
     "OutsideValidityWarning",
     "VbiWarning",
+    "WorkerLostWarning",
     "contact_note",
     "flight_note",
     "mark_lost_contact",
@@ -56,6 +58,15 @@ class OutsideValidityWarning(VbiWarning):
 
 class FailedRowsWarning(VbiWarning):
     """Some rows of a study failed; the others are kept and the ``error`` column says why."""
+
+
+class WorkerLostWarning(VbiWarning):
+    """A worker process of a study died (killed, perhaps by the out-of-memory killer); the
+    chunks it held were run again, and the study went on."""
+
+
+class CostWarning(VbiWarning):
+    """A computation about to start is estimated to take longer than about a minute."""
 
 
 class ContactFlags:

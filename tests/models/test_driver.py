@@ -123,6 +123,7 @@ def test_simulate_many_warns_once_for_all_crossings() -> None:
     rough = vbi.Profile(road.x, 8 * road.elevation)
     with pytest.warns(vbi.ContactLossWarning) as caught:
         vbi.simulate_many(bridge, vehicle, rough, [speed, 0.9 * speed], start)
+    caught = [w for w in caught if w.category is vbi.ContactLossWarning]  # h23: the road x 8
     assert len(caught) == 1 and "2 of 2 crossings lost contact" in str(caught[0].message)
 
 

@@ -43,6 +43,7 @@ from .. import _validation as check
 from ..bridges import Bridge
 from ..profiles import Profile
 from ..ranges import check_range, outside_note
+from ..road_checks import crossing_road_notes
 from ..units import g as GRAVITY
 from ..vehicles import Vehicle, VehicleSystem, as_system
 from .batch import PEAK_SLOTS, Batch
@@ -182,24 +183,24 @@ def input_notes(
     """Sentences on inputs outside their intended (soft) ranges, for a crossing's notes.
 
     Returns the sentences on the bridge and the vehicle (their constructors warned already:
-    the span, mass, damping and first frequency, the vehicle's weight and frequencies) and
-    those on the crossing itself (the speed, and the profile's sampling against the study's
-    rule (32): at least two samples per period of the highest frequency the model follows,
-    ``omega_max = 0.1 / dt_default``, at this speed; a road that is a straight line is
-    exact at any spacing).
+    the span, mass, damping and first frequency, and every note of the vehicle,
+    :attr:`~vbi_lib.vehicles.VehicleSystem.notes`) and those on the crossing itself (the
+    speed, and the profile's sampling against the study's rule (32): at least two samples
+    per period of the highest frequency the model follows, ``omega_max = 0.1 / dt_default``,
+    at this speed; a road that is a straight line is exact at any spacing).  A road given
+    as data that is not a plausible road (:func:`vbi_lib.road_checks.road_notes`) is in the
+    first list when it was warned of already (when read), else in the second.
     """
     objects = [
         *(outside_note("span", length, "span") for length in sorted(set(bridge.spans))),
         outside_note("mass_per_length", bridge.mass_per_length),
         outside_note("bridge_frequency", bridge.first_frequency_hz, "first_frequency_hz"),
         outside_note("bridge_damping_ratio", bridge.damping_ratio, "damping_ratio"),
-        outside_note("vehicle_weight", system.weight, "vehicle weight"),
-        *(
-            outside_note("vehicle_frequency", float(f), f"vehicle frequency {i + 1}")
-            for i, f in enumerate(system.frequencies_hz)
-        ),
+        *system.notes,  # h23: all the vehicle's constructors warned of (vbi_lib.vehicles)
     ]
-    crossing = [outside_note("speed", speed)]
+    noted, fresh = crossing_road_notes(profile)  # h23: the road (vbi_lib.road_checks)
+    objects += noted
+    crossing = [outside_note("speed", speed), *fresh]
     spacing = _uneven_spacing(profile)
     if spacing is not None:
         f_max = DEFAULT_OMEGA_DT / default_dt / (2.0 * math.pi)

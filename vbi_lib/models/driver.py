@@ -15,8 +15,10 @@ import numpy as np
 
 from .. import _validation as check
 from ..bridges import Bridge
+from ..costs import warn_crossing
 from ..profiles import Profile
 from ..ranges import MAX_NODES, RANGES, check_range, warn_outside
+from ..road_checks import past_the_road, road_notes
 from ..validity import ContactLossWarning, contact_note, flight_note
 from ..vehicles import as_system
 from .base import (
@@ -205,6 +207,8 @@ def simulate(
     dt = default if given is None else given
     stop = bridge_start + bridge.length + system.wheelbase + speed * free_vibration
     grid = node_grid(bridge, profile, speed, bridge_start, dt, stop, vehicle=system)
+    notes += past_the_road(profile, stop, free_vibration, speed)  # h23 (road_checks)
+    warn_crossing(kind.name, grid.x.size, getattr(setup, "count", modes), system.n_axles)  # h23
     objects, outside = input_notes(bridge, system, profile, speed, default)
     step_note = check_step(grid.dt_max, default, given, kind.max_omega_dt)
     outside += [step_note] if step_note else []
@@ -455,6 +459,7 @@ def _check_steps(
     spacing = np.array([_uneven_spacing(x) or np.nan for x in batch.profiles])[batch.profile]
     f_max = DEFAULT_OMEGA_DT / defaults / (2.0 * math.pi)
     suspects |= spacing * 2.0 * f_max / batch.speed > RANGES["sample_spacing"].soft[1]
+    suspects |= np.array([bool(road_notes(x)) for x in batch.profiles])[batch.profile]  # h23
     outside: dict[int, list[str]] = {}
     for i in np.flatnonzero(suspects):
         notes = _crossing_notes(kind, batch, int(i), dt)

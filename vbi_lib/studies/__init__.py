@@ -14,8 +14,8 @@ The package is split by job: :mod:`~vbi_lib.studies.recipes` (roads a worker bui
 :mod:`~vbi_lib.studies.scenarios` (tables: grids, Monte Carlo draws),
 :mod:`~vbi_lib.studies.checks` (a table checked before any work),
 :mod:`~vbi_lib.studies.runner` (the runner and its executors), :mod:`~vbi_lib.studies.chunks`
-(what a worker runs), :mod:`~vbi_lib.studies.files`
-(saving results),
+(what a worker runs), :mod:`~vbi_lib.studies.workers` (a worker that died),
+:mod:`~vbi_lib.studies.files` (saving results),
 :mod:`~vbi_lib.studies.statistics` (characteristic values, agreement with a reference, how
 many crossings lost contact) and
 :mod:`~vbi_lib.studies.envelopes` (responses at sections: their columns and envelopes,
@@ -30,7 +30,12 @@ a local process pool by default, or any executor you pass, such as
 worker and cached there (a profile shared by many rows is generated once per worker).  Every
 crossing depends only on its own row, so the table is the same, bit for bit, whatever the
 executor and the chunk size; random studies draw all their random numbers in
-:func:`monte_carlo`, before any work, from one seed.
+:func:`monte_carlo`, before any work, from one seed.  So are the validity columns (contact
+flags and fractions, and the inputs outside their intended ranges: ``bridge_notes``,
+``vehicle_notes``, ``profile_notes``), with or without ``sections``.  When a worker of a
+process pool dies (killed, perhaps out of memory), the chunks it held run again once, alone,
+in a new pool; a chunk whose worker dies again keeps NaN and the reason in ``error``, and
+every finished row is kept.
 
 Sliding the road: with ``profile_offset = d >= 0`` the wheel meets, at station ``x``, the
 elevation the profile has at ``x + d``; the truck still starts at the profile's first

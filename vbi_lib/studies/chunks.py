@@ -17,10 +17,11 @@ import numpy as np
 
 from ..bridges import Bridge
 from ..profiles import Profile
+from ..road_checks import inherit, road_notes
 from ..validity import ContactLossWarning
 from .envelopes import SECTION_FIELDS, section_columns
 
-__all__ = ["SUMMARIES", "failure", "init_worker", "run_chunk", "set_threads"]
+__all__ = ["SUMMARIES", "crossing_summaries", "failure", "init_worker", "run_chunk", "set_threads"]
 
 
 def set_threads(threads: int | None) -> None:
@@ -59,7 +60,7 @@ def _road(profile: Profile, offset: float) -> Profile:
     heights = np.empty(stations.size)
     heights[0] = np.interp(cut, x, elevation)
     heights[1:] = elevation[first:]
-    return Profile(stations + -offset, heights, name=profile.name)
+    return inherit(profile, Profile(stations + -offset, heights, name=profile.name))
 
 
 def _iri_of_spans(road: Profile, bridge: Bridge, start: float, width: int) -> np.ndarray:
@@ -132,15 +133,30 @@ def _one_with_sections(
             dt=payload["dt"],
         )
     out["daf"][i, : crossing.daf.size] = crossing.daf
-    out["contact_force_amplification"][i] = crossing.contact_force_amplification
-    on = np.flatnonzero(crossing.on_bridge)
-    peak = on[np.argmax(crossing.contact_force[on])]
-    out["peak_contact_position"][i] = crossing.position[peak]
-    out["min_contact_force_ratio"][i] = crossing.min_contact_force_ratio
-    out["tension_fraction"][i] = crossing.tension_fraction
-    out["dt"][i] = crossing.dt
+    for name, value in crossing_summaries(crossing).items():
+        out[name][i] = value
     for name, values in section_columns(crossing.sections(sections)).items():
         out[name][i] = values
+
+
+def crossing_summaries(crossing: Any) -> dict[str, float]:
+    """The :data:`SUMMARIES` of one :class:`~vbi_lib.models.results.Crossing`, as
+    :func:`~vbi_lib.simulate_many` gives them: every validity field, whatever way the
+    crossing ran (the largest contact force is the worst axle's over its static load, at
+    that axle's station)."""
+    ratio = crossing.axle_contact_force_ratio
+    on = crossing.axle_on_bridge
+    node, axle = np.unravel_index(np.argmax(np.where(on, ratio, -np.inf)), ratio.shape)
+    values = {
+        "contact_force_amplification": crossing.contact_force_amplification,
+        "peak_contact_position": crossing.axle_position[node, axle],
+        "min_contact_force_ratio": crossing.min_contact_force_ratio,
+        "tension_fraction": crossing.tension_fraction,
+        "flight_fraction": crossing.flight_fraction,
+        "dt": crossing.dt,
+    }
+    assert set(values) == set(SUMMARIES)  # noqa: S101 - a field added to one and not the other
+    return values
 
 
 def _batch(payload: dict[str, Any], road: list, rows: np.ndarray, name: str) -> Any:
@@ -201,6 +217,8 @@ def run_chunk(payload: dict[str, Any]) -> dict[str, np.ndarray]:
     n = payload["speed"].size
     out: dict[str, np.ndarray] = {"error": np.full(n, None, dtype=object)}
     road = _roads(payload, out["error"])
+    notes = [None if r is None else "; ".join(road_notes(r)) or None for r in road]
+    out["profile_notes"] = np.array(notes, dtype=object)
     out["daf"] = np.full((n, payload["width"]), np.nan)
     out |= {name: np.full(n, np.nan) for name in SUMMARIES}
     if payload["sections"] is not None:

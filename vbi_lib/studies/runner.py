@@ -24,12 +24,22 @@ import pandas as pd
 
 from .. import _validation as check
 from ..profiles import Profile
-from ..validity import ContactLossWarning, FailedRowsWarning
+from ..ranges import outside_note
+from ..road_checks import warn_implausible
+from ..validity import ContactLossWarning, FailedRowsWarning, WorkerLostWarning
 from ..vehicles import Vehicle, as_system
 from .checks import TAG_PREFIX, _rows, validate
 from .chunks import SUMMARIES, failure, init_worker, run_chunk
 from .envelopes import SECTION_FIELDS, check_sections
 from .recipes import extent, profile_label
+from .workers import (
+    death_reason,
+    exit_statuses,
+    lost_worker,
+    missing_guard,
+    processes,
+    replacement,
+)
 
 #: Default number of crossings per chunk handed to a worker.
 DEFAULT_CHUNK_SIZE = 250
@@ -104,6 +114,17 @@ def _labels(objects: Sequence[Any], kind: str) -> list[str]:
     return out
 
 
+def _bridge_notes(bridge: Any) -> str | None:
+    """The bridge's inputs outside their intended ranges, as a crossing's notes give them."""
+    notes = (
+        *(outside_note("span", length, "span") for length in sorted(set(bridge.spans))),
+        outside_note("mass_per_length", bridge.mass_per_length),
+        outside_note("bridge_frequency", bridge.first_frequency_hz, "first_frequency_hz"),
+        outside_note("bridge_damping_ratio", bridge.damping_ratio, "damping_ratio"),
+    )
+    return "; ".join(n for n in notes if n) or None
+
+
 def _profile_columns(profiles: Sequence[Any]) -> dict[str, list[Any]]:
     """Scalar description of each unique profile (recipe fields, or extent and spacing)."""
     records = []
@@ -151,7 +172,9 @@ def run(
         this process for small studies (fewer than :data:`SERIAL_BELOW` crossings), else the
         local process pool :func:`default_executor`.  Give a process pool the ``spawn``
         context (``fork`` after numba's OpenMP threads have run is unsafe); in a script, run
-        the study under ``if __name__ == "__main__":``.
+        the study under ``if __name__ == "__main__":``.  A process pool whose worker dies is
+        replaced by a new one of the same settings (:mod:`~vbi_lib.studies.workers`); the one
+        given is then broken.
     chunk_size
         Crossings per task; default about four tasks per worker, at most
         :data:`DEFAULT_CHUNK_SIZE`.  Results do not depend on it.
@@ -191,7 +214,13 @@ def run(
         ``flight_fraction`` (a tyre off the road, modelled), ``outside_validity`` (a
         bilateral contact became tensile: outside the model's validity; one
         ``ContactLossWarning`` says how many did) and ``lost_contact`` (either);
-        ``dt`` [s] and, on request, ``iri_1``, ``iri_2``.  When a row fails (its crossing
+        ``dt`` [s]; the inputs outside their intended ranges, as sentences (text columns,
+        missing when there are none): ``bridge_notes``, ``vehicle_notes`` (whatever the
+        vehicle's constructors warned of, :attr:`~vbi_lib.vehicles.VehicleSystem.notes`)
+        and ``profile_notes`` (a road given as data that is no plausible road,
+        :mod:`vbi_lib.road_checks`); and, on request, ``iri_1``, ``iri_2``.  These columns
+        are the same whatever the options (``sections``, the executor, the chunk size).
+        When a row fails (its crossing
         cannot be run: too many time steps, say), its results are NaN, the other rows are
         kept, and an ``error`` column (present only then) gives the reason of each failed
         row (``None`` for the others).
@@ -208,6 +237,13 @@ def run(
         Once, with how many crossings lost contact.
     FailedRowsWarning
         Once, naming the rows that failed and the first reason.
+    WorkerLostWarning
+        A worker of a process pool died (killed, perhaps out of memory): the chunks it held
+        run again once, one at a time, in a new pool of the same settings; a chunk whose
+        worker dies again keeps NaN results and the reason in ``error``; every finished row
+        is kept.  (A Dask cluster reschedules such work itself.)
+    OutsideValidityWarning
+        A road given as a :class:`~vbi_lib.Profile` that is no plausible road (once each).
 
     Examples
     --------
@@ -249,6 +285,9 @@ def run(
     width = max(2, *(b.n_spans for b in bridges))
     v_code, vehicles = pd.factorize(table["vehicle"])
     p_code, profiles = pd.factorize(table["profile"])
+    for road in profiles:
+        if isinstance(road, Profile):  # warned of here once, whatever the executor
+            warn_implausible(road, reader="studies.run")
     arrays = {
         "speed": table["speed"].to_numpy(float),
         "start": table["bridge_start"].to_numpy(float),
@@ -302,46 +341,91 @@ def run(
         import numba
 
         threads_before = numba.get_num_threads()
-    in_flight: dict[cf.Future, np.ndarray] = {}
+
+    profile_notes = np.full(n, None, dtype=object)
+
+    def record(rows: np.ndarray, result: dict[str, Any]) -> None:
+        errors[rows] = result["error"]
+        daf[rows] = result["daf"]
+        profile_notes[rows] = result["profile_notes"]
+        for name in SUMMARIES:
+            summaries[name][rows] = result[name]
+        if sections is not None:
+            for name in SECTION_FIELDS:
+                per_section[name][rows] = result[name]
+        if iri:
+            iri_values[rows] = result["iri"]
+
+    owned: list[cf.Executor] = []  # pools made here to replace broken ones
     limit = max(8, 3 * workers)
-    pending = iter(chunks)
+    pending = list(range(len(chunks)))[::-1]  # chunk numbers, the next one last
+    alone: list[int] = []  # chunks held by a worker that died: run again, one at a time
+    tries = np.zeros(len(chunks), dtype=int)
+    finished = 0
+    in_flight: dict[cf.Future, int] = {}
     try:
-        while True:
-            for rows in pending:
-                in_flight[pool.submit(run_chunk, payload(rows))] = rows
-                if len(in_flight) >= limit:
-                    break
-            if not in_flight:
-                break
+        while pending or alone or in_flight:
+            if alone:
+                if not in_flight:
+                    k = alone.pop()
+                    in_flight[pool.submit(run_chunk, payload(chunks[k]))] = k
+            else:
+                while pending and len(in_flight) < limit:
+                    k = pending.pop()
+                    in_flight[pool.submit(run_chunk, payload(chunks[k]))] = k
+            before = processes(pool)
             done, _ = cf.wait(list(in_flight), return_when=cf.FIRST_COMPLETED)
+            broken = []
             for future in done:
-                rows = in_flight.pop(future)
+                k = in_flight.pop(future)
+                tries[k] += 1
                 try:
-                    result = future.result()
+                    record(chunks[k], future.result())
+                    finished += 1
                 except BrokenProcessPool:
-                    raise
-                except Exception as exc:  # noqa: BLE001 - the chunk's rows failed, not the run
-                    errors[rows] = failure(exc)
-                    bar.update(rows.size)
+                    broken.append(k)
                     continue
-                errors[rows] = result["error"]
-                daf[rows] = result["daf"]
-                for name in SUMMARIES:
-                    summaries[name][rows] = result[name]
-                if sections is not None:
-                    for name in SECTION_FIELDS:
-                        per_section[name][rows] = result[name]
-                if iri:
-                    iri_values[rows] = result["iri"]
-                bar.update(rows.size)
-    except BrokenProcessPool as exc:
-        raise RuntimeError(
-            "a worker of the process pool died; in a script, start the study under "
-            "`if __name__ == '__main__':` (worker processes are spawned and import the script)"
-        ) from exc
+                except Exception as exc:  # noqa: BLE001 - the chunk's rows failed, not the run
+                    errors[chunks[k]] = lost_worker(exc) or failure(exc)
+                bar.update(chunks[k].size)
+            if broken:  # the pool is dead: every chunk it held fails alike
+                for future in list(in_flight):
+                    tries[in_flight[future]] += 1
+                    broken.append(in_flight.pop(future))
+                pool.shutdown(wait=True, cancel_futures=True)
+                statuses = exit_statuses(before)
+                told = "; ".join(statuses) or "no exit status"
+                script = missing_guard(pool) if not finished else None
+                if script is not None:
+                    raise RuntimeError(
+                        f"the worker processes of the process pool died as they started "
+                        f"({told}): the script {script} has no `if __name__ == '__main__':` "
+                        "guard, so each spawned worker re-runs it; start the study under "
+                        "that guard"
+                    )
+                again = [k for k in broken if tries[k] >= 2]
+                for k in again:
+                    errors[chunks[k]] = death_reason(statuses, again=True)
+                    bar.update(chunks[k].size)
+                alone += [k for k in broken if tries[k] < 2]
+                warnings.warn(
+                    f"a worker of the process pool died ({told}), perhaps out of memory: "
+                    f"{len(broken) - len(again)} chunk(s) it held run again, one at a time, "
+                    f"in a new pool; {len(again)} whose worker died on their second run keep "
+                    "NaN and the reason in column error; every finished row is kept",
+                    WorkerLostWarning,
+                    stacklevel=2,
+                )
+                if executor is None:
+                    pool = default_executor(workers)
+                else:
+                    pool = replacement(pool)
+                    owned.append(pool)
     finally:
         for future in in_flight:
             future.cancel()
+        for extra in owned:
+            extra.shutdown(wait=True, cancel_futures=True)
         bar.close()
         if isinstance(pool, _Serial):
             numba.set_num_threads(threads_before)
@@ -380,6 +464,10 @@ def run(
     for cols, codes in ((bridge_cols, b_code), (vehicle_cols, v_code)):
         for name, values in cols.items():
             out[name] = np.asarray(values)[codes]
+    bridge_notes = np.array([_bridge_notes(x) for x in bridges], dtype=object)
+    out["bridge_notes"] = pd.array(bridge_notes[b_code], dtype="str")
+    vehicle_notes = np.array(["; ".join(as_system(x).notes) or None for x in vehicles], object)
+    out["vehicle_notes"] = pd.array(vehicle_notes[v_code], dtype="str")
     for name, values in _profile_columns(list(profiles)).items():
         column = pd.Series(values, dtype=object)
         numeric = pd.to_numeric(column, errors="coerce")
@@ -410,6 +498,7 @@ def run(
     out["outside_validity"] = lost = summaries["min_contact_force_ratio"] < 0
     out["lost_contact"] = lost | (summaries["flight_fraction"] > 0)
     out["dt"] = summaries["dt"]
+    out["profile_notes"] = pd.array(profile_notes, dtype="str")
     if lost.any():
         warnings.warn(
             f"{int(lost.sum())} of {n} crossings lost contact (column lost_contact): the "

@@ -76,6 +76,12 @@ class Convoy:
         """Total weight [N]."""
         return self.system.weight
 
+    @property
+    def notes(self) -> tuple[str, ...]:
+        """Each vehicle's notes (:attr:`~vbi_lib.vehicles.VehicleSystem.notes`), prefixed
+        with its place in the convoy."""
+        return self.system.given_notes
+
     @cached_property
     def system(self) -> VehicleSystem:
         """All the vehicles as one block-diagonal system."""
@@ -140,8 +146,9 @@ def hs20(
     tyres = check.flag("tyres", tyres)
     omega = 2.0 * math.pi * check_range("vehicle_frequency", bounce_hz, "bounce_hz", warn=False)
     zeta = check.damping_ratio("suspension_damping_ratio", suspension_damping_ratio)
-    check_range("vehicle_damping_ratio", zeta, "suspension_damping_ratio")
-    check_range("footprint", footprint)
+    # the axles and tyres warn of a damping ratio or footprint outside the intended range
+    check_range("vehicle_damping_ratio", zeta, "suspension_damping_ratio", warn=False)
+    check_range("footprint", footprint, warn=False)
     axles = []
     for i, (offset, load) in enumerate(zip((0.0, 14 * ft, 14 * ft + spacing), HS20_AXLE_LOADS,
                                            strict=True)):  # fmt: skip

@@ -16,7 +16,7 @@ from functools import cached_property
 
 from .. import _validation as check
 from .. import display
-from ..ranges import check_range
+from ..ranges import check_range, outside_note, warn_outside
 from ..units import g
 from .system import VehicleSystem
 
@@ -55,15 +55,30 @@ class Vehicle:
     damping: float = 0.0
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "mass", check_range("vehicle_mass", self.mass, "mass"))
+        mass = check_range("vehicle_mass", self.mass, "mass", warn=False)
+        object.__setattr__(self, "mass", mass)
         object.__setattr__(self, "stiffness", check.positive("stiffness", self.stiffness))
         object.__setattr__(self, "damping", check.non_negative("damping", self.damping))
         zeta = check.damping_ratio("damping_ratio (from damping)", self.damping_ratio)
-        check_range("vehicle_damping_ratio", zeta, "damping_ratio (from damping)")
+        check_range("vehicle_damping_ratio", zeta, "damping_ratio (from damping)", warn=False)
         check_range(
             "vehicle_frequency", self.frequency_hz, "frequency_hz (from mass and stiffness)",
             warn=False,
         )  # fmt: skip
+        for note in self.notes:
+            warn_outside(note)
+
+    @property
+    def notes(self) -> tuple[str, ...]:
+        """Sentences on the mass and damping ratio outside their intended ranges (what the
+        constructor warns of); the frequency is judged by :attr:`system`, whose
+        :attr:`~vbi_lib.vehicles.VehicleSystem.notes` hold these and its own."""
+        notes = (
+            outside_note("vehicle_mass", self.mass, "mass"),
+            outside_note("vehicle_damping_ratio", self.damping_ratio,
+                         "damping_ratio (from damping)"),
+        )  # fmt: skip
+        return tuple(n for n in notes if n)
 
     @classmethod
     def from_frequency(
@@ -146,6 +161,7 @@ class Vehicle:
             footprint=[0.0],
             dof_names=("sprung mass",),
             name="sprung mass",
+            given_notes=self.notes,
         )
 
     def __repr__(self) -> str:

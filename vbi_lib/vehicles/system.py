@@ -118,6 +118,10 @@ class VehicleSystem:
         Names of the degrees of freedom and their units (``"m"`` or ``"rad"``).
     name
         A label.
+    given_notes
+        Sentences on the parameters of the vehicle this system stands for that lie outside
+        their intended ranges (what its constructor warned of), given by the vehicle
+        (:attr:`~vbi_lib.QuarterCar.notes`, ...); :attr:`notes` adds the system's own.
 
     Raises
     ------
@@ -150,6 +154,7 @@ class VehicleSystem:
     dof_names: tuple[str, ...] = ()
     dof_units: tuple[str, ...] = ()
     name: str = field(default="")
+    given_notes: tuple[str, ...] = field(default=(), repr=False)
 
     def __post_init__(self) -> None:
         mass = _numbers("mass", self.mass, 2)
@@ -205,16 +210,23 @@ class VehicleSystem:
             object.__setattr__(self, key, value)
         object.__setattr__(self, "dof_names", names)
         object.__setattr__(self, "dof_units", units)
-        check_range("vehicle_weight", self.weight, "weight (the sum of static_loads)")
+        weight = "weight (the sum of static_loads)"
+        check_range("vehicle_weight", self.weight, weight, warn=False)
         self._check_gravity()
-        notes = [
-            outside_note(
-                "vehicle_frequency", float(f), f"frequency {i + 1} of {self.name or 'the vehicle'}"
-            )
+        given = self.given_notes
+        if isinstance(given, str) or not all(isinstance(n, str) for n in given):
+            raise TypeError(f"given_notes={given!r} must be a tuple of sentences (text)")
+        heavy = outside_note("vehicle_weight", self.weight, weight)
+        label = self.name or "the vehicle"
+        frequencies = [
+            outside_note("vehicle_frequency", float(f), f"frequency {i + 1} of {label}")
             for i, f in enumerate(self.frequencies_hz)
         ]
-        if any(notes):
-            warn_outside(next(n for n in notes if n))
+        own = [n for n in (heavy, *frequencies) if n]
+        for note in own[: 1 + bool(heavy)]:  # the weight and the first frequency outside
+            warn_outside(note)
+        object.__setattr__(self, "given_notes", tuple(given))
+        object.__setattr__(self, "_notes", tuple(dict.fromkeys((*given, *own))))
 
     def _check_gravity(self) -> None:
         """The static loads must be the weight of the masses (see the module docstring)."""
@@ -245,6 +257,14 @@ class VehicleSystem:
                 "its moment about the centre of mass"
             )
         object.__setattr__(self, "_translation", d)
+
+    @property
+    def notes(self) -> tuple[str, ...]:
+        """Every sentence on this vehicle's parameters outside their intended ranges: the
+        vehicle's (:attr:`given_notes`), then the system's own (its weight and its natural
+        frequencies on a rigid road).  Each crossing carries them in its ``notes`` and each
+        study in its ``vehicle_notes`` column."""
+        return self._notes
 
     @property
     def rigid_translation(self) -> np.ndarray:
@@ -358,7 +378,9 @@ def stack(systems: list[VehicleSystem], positions: list[float], name: str = "") 
     def joined(key: str) -> np.ndarray:
         return np.concatenate([getattr(s, key) for s in systems])
 
+    notes = tuple(f"vehicle {k + 1}: {note}" for k, s in enumerate(systems) for note in s.notes)
     return VehicleSystem(
+        given_notes=notes,
         contact=contact,
         offsets=np.concatenate([s.offsets + p for s, p in zip(systems, positions, strict=True)]),
         static_loads=joined("static_loads"),

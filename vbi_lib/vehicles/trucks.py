@@ -22,13 +22,24 @@ from functools import cached_property
 import numpy as np
 
 from .. import _validation as check
-from ..ranges import check_range
+from ..ranges import check_range, outside_note, warn_outside
 from ..units import g as GRAVITY
 from .footprint import DEFAULT_FOOTPRINT
 from .sprung_mass import Vehicle
 from .system import VehicleSystem
 
 __all__ = ["Axle", "IndependentAxles", "QuarterCar", "RigidTruck", "Tyre"]
+
+
+def _notes(*checks: tuple[str, float, str]) -> tuple[str, ...]:
+    """The sentences of :func:`~vbi_lib.ranges.outside_note` for ``(key, value, name)``s."""
+    notes = (outside_note(key, value, name) for key, value, name in checks)
+    return tuple(n for n in notes if n)
+
+
+def _damping_ratio(damping: float, stiffness: float, mass: float) -> float:
+    """``c / (2 sqrt(k m))``, the damping ratio of a mass on a spring and a damper."""
+    return damping / (2.0 * math.sqrt(stiffness * mass))
 
 
 @dataclass(frozen=True)
@@ -57,11 +68,21 @@ class Tyre:
     unilateral: bool = True
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "unsprung_mass", check_range("unsprung_mass", self.unsprung_mass))
+        mass = check_range("unsprung_mass", self.unsprung_mass, warn=False)
+        object.__setattr__(self, "unsprung_mass", mass)
         object.__setattr__(self, "stiffness", check.positive("tyre stiffness", self.stiffness))
         object.__setattr__(self, "damping", check.non_negative("tyre damping", self.damping))
-        object.__setattr__(self, "footprint", check_range("footprint", self.footprint))
+        object.__setattr__(self, "footprint", check_range("footprint", self.footprint, warn=False))
         object.__setattr__(self, "unilateral", check.flag("unilateral", self.unilateral))
+        for note in self.notes:
+            warn_outside(note)
+
+    @property
+    def notes(self) -> tuple[str, ...]:
+        """Sentences on the unsprung mass and footprint outside their intended ranges (what
+        the constructor warns of)."""
+        return _notes(("unsprung_mass", self.unsprung_mass, "unsprung_mass"),
+                      ("footprint", self.footprint, "footprint"))  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -113,12 +134,12 @@ class QuarterCar:
 
     def __post_init__(self) -> None:
         for name, key in (("sprung_mass", "vehicle_mass"), ("unsprung_mass", "unsprung_mass")):
-            object.__setattr__(self, name, check_range(key, getattr(self, name), name))
+            object.__setattr__(self, name, check_range(key, getattr(self, name), name, warn=False))
         for name in ("suspension_stiffness", "tyre_stiffness"):
             object.__setattr__(self, name, check.positive(name, getattr(self, name)))
         for name in ("suspension_damping", "tyre_damping"):
             object.__setattr__(self, name, check.non_negative(name, getattr(self, name)))
-        object.__setattr__(self, "footprint", check_range("footprint", self.footprint))
+        object.__setattr__(self, "footprint", check_range("footprint", self.footprint, warn=False))
         object.__setattr__(self, "unilateral", check.flag("unilateral", self.unilateral))
         body = math.sqrt(self.suspension_stiffness / self.sprung_mass) / (2 * math.pi)
         hop = math.sqrt((self.suspension_stiffness + self.tyre_stiffness) / self.unsprung_mass) / (
@@ -127,6 +148,23 @@ class QuarterCar:
         for name, value in (("body frequency", body), ("axle hop frequency", hop)):
             check_range("vehicle_frequency", value, f"{name} (from masses and stiffnesses)",
                         warn=False)  # fmt: skip
+        for note in self.notes:
+            warn_outside(note)
+
+    @property
+    def notes(self) -> tuple[str, ...]:
+        """Sentences on the masses, the suspension's damping ratio and the footprint outside
+        their intended ranges (what the constructor warns of); the frequencies are judged by
+        :attr:`system`, whose :attr:`~vbi_lib.vehicles.VehicleSystem.notes` hold these and
+        its own."""
+        zeta = _damping_ratio(self.suspension_damping, self.suspension_stiffness,
+                              self.sprung_mass)  # fmt: skip
+        return _notes(
+            ("vehicle_mass", self.sprung_mass, "sprung_mass"),
+            ("unsprung_mass", self.unsprung_mass, "unsprung_mass"),
+            ("vehicle_damping_ratio", zeta, "suspension_damping_ratio"),
+            ("footprint", self.footprint, "footprint"),
+        )
 
     @classmethod
     def from_frequencies(
@@ -160,7 +198,7 @@ class QuarterCar:
                 f"masses: the tyre stiffness would be {k_t:.3g} N/m; raise axle_hop_hz"
             )
         z_s = check.damping_ratio("suspension_damping_ratio", suspension_damping_ratio)
-        check_range("vehicle_damping_ratio", z_s, "suspension_damping_ratio")
+        check_range("vehicle_damping_ratio", z_s, "suspension_damping_ratio", warn=False)
         z_t = check.damping_ratio("tyre_damping_ratio", tyre_damping_ratio)
         return cls(m_s, m_u, k_s, 2 * z_s * m_s * w_s, k_t, 2 * z_t * math.sqrt(k_t * m_u),
                    footprint, unilateral)  # fmt: skip
@@ -206,6 +244,7 @@ class QuarterCar:
             footprint=[self.footprint],
             dof_names=("sprung mass", "unsprung mass"),
             name="quarter car",
+            given_notes=self.notes,
         )
 
 
@@ -233,8 +272,10 @@ class Axle:
     tyre: Tyre | None = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "offset", check_range("axle_offset", self.offset, "offset"))
-        object.__setattr__(self, "load", check_range("vehicle_weight", self.load, "load"))
+        offset = check_range("axle_offset", self.offset, "offset", warn=False)
+        object.__setattr__(self, "offset", offset)
+        object.__setattr__(self, "load", check_range("vehicle_weight", self.load, "load",
+                                                     warn=False))  # fmt: skip
         object.__setattr__(self, "stiffness", check.positive("stiffness", self.stiffness))
         object.__setattr__(self, "damping", check.non_negative("damping", self.damping))
         if self.tyre is not None and not isinstance(self.tyre, Tyre):
@@ -244,6 +285,20 @@ class Axle:
                 f"the tyre's unsprung_mass={self.tyre.unsprung_mass!r} kg weighs more than the "
                 f"axle load={self.load!r} N; lower it or raise the load"
             )
+        for note in self._own_notes():
+            warn_outside(note)
+
+    def _own_notes(self) -> tuple[str, ...]:
+        zeta = _damping_ratio(self.damping, self.stiffness, self.sprung_load / GRAVITY)
+        return _notes(("axle_offset", self.offset, "offset"), ("vehicle_weight", self.load, "load"),
+                      ("vehicle_damping_ratio", zeta, "suspension_damping_ratio"))  # fmt: skip
+
+    @property
+    def notes(self) -> tuple[str, ...]:
+        """Sentences on the offset, the load, the suspension's damping ratio and the tyre
+        outside their intended ranges (what the constructors of the axle and its tyre warn
+        of)."""
+        return self._own_notes() + (() if self.tyre is None else self.tyre.notes)
 
     @property
     def sprung_load(self) -> float:
@@ -264,6 +319,10 @@ def _axles(axles: object) -> tuple[Axle, ...]:
             f"axle offsets {offsets} must start at 0 (the first axle) and increase to the rear"
         )
     return items
+
+
+def _axle_notes(axles: tuple[Axle, ...]) -> tuple[str, ...]:
+    return tuple(f"axle {a + 1}: {note}" for a, axle in enumerate(axles) for note in axle.notes)
 
 
 class _Assembly:
@@ -303,6 +362,7 @@ class _Assembly:
             offsets=[a.offset for a in axles], static_loads=[a.load for a in axles],
             contact_stiffness=self.k, contact_damping=self.c, unilateral=self.unilateral,
             footprint=self.footprint, dof_names=tuple(names), dof_units=tuple(units), name=name,
+            given_notes=_axle_notes(axles),
         )  # fmt: skip
 
 
@@ -331,6 +391,11 @@ class IndependentAxles:
     def weight(self) -> float:
         """Sum of the axle loads [N]."""
         return float(sum(a.load for a in self.axles))
+
+    @property
+    def notes(self) -> tuple[str, ...]:
+        """Each axle's :attr:`Axle.notes`, prefixed with its number."""
+        return _axle_notes(self.axles)
 
     @cached_property
     def system(self) -> VehicleSystem:
@@ -399,6 +464,11 @@ class RigidTruck:
     def weight(self) -> float:
         """Sum of the axle loads [N]."""
         return float(sum(a.load for a in self.axles))
+
+    @property
+    def notes(self) -> tuple[str, ...]:
+        """Each axle's :attr:`Axle.notes`, prefixed with its number."""
+        return _axle_notes(self.axles)
 
     @property
     def body_mass(self) -> float:
