@@ -139,8 +139,10 @@ def hs20(
     check.choice("body", body, ("independent", "rigid"))
     tyres = check.flag("tyres", tyres)
     omega = 2.0 * math.pi * check_range("vehicle_frequency", bounce_hz, "bounce_hz", warn=False)
-    zeta = check.damping_ratio("suspension_damping_ratio", suspension_damping_ratio)
-    check_range("vehicle_damping_ratio", zeta, "suspension_damping_ratio")
+    # any ratio >= 0: 1 or more is an overdamped suspension (warned of, not refused)
+    zeta = check_range(
+        "vehicle_damping_ratio", suspension_damping_ratio, "suspension_damping_ratio"
+    )
     check_range("footprint", footprint)
     axles = []
     for i, (offset, load) in enumerate(zip((0.0, 14 * ft, 14 * ft + spacing), HS20_AXLE_LOADS,

@@ -144,7 +144,9 @@ class QuarterCar:
         ``body_hz`` is the sprung mass on its suspension alone,
         :math:`\\sqrt{k_s/m_s}/2\\pi`; ``axle_hop_hz`` the unsprung mass between the
         suspension and the tyre, :math:`\\sqrt{(k_s + k_t)/m_u}/2\\pi`.  The damping
-        ratios are of those two oscillators.
+        ratios are of those two oscillators (the suspension's with the sprung mass, the
+        tyre's with the unsprung mass), each >= 0: 1 or more is overdamped, accepted and
+        warned of (``vehicle_damping_ratio`` in :data:`vbi_lib.ranges.RANGES`).
         """
         m_s = check_range("vehicle_mass", sprung_mass, "sprung_mass", warn=False)
         m_u = check_range("unsprung_mass", unsprung_mass, warn=False)
@@ -158,9 +160,10 @@ class QuarterCar:
                 f"axle_hop_hz={axle_hop_hz!r} is too low for body_hz={body_hz!r} with these "
                 f"masses: the tyre stiffness would be {k_t:.3g} N/m; raise axle_hop_hz"
             )
-        z_s = check.damping_ratio("suspension_damping_ratio", suspension_damping_ratio)
-        check_range("vehicle_damping_ratio", z_s, "suspension_damping_ratio")
-        z_t = check.damping_ratio("tyre_damping_ratio", tyre_damping_ratio)
+        # any damping ratio >= 0: 1 or more is an overdamped suspension (or tyre), warned of
+        z_s = check_range("vehicle_damping_ratio", suspension_damping_ratio,
+                          "suspension_damping_ratio")  # fmt: skip
+        z_t = check_range("vehicle_damping_ratio", tyre_damping_ratio, "tyre_damping_ratio")
         return cls(m_s, m_u, k_s, 2 * z_s * m_s * w_s, k_t, 2 * z_t * math.sqrt(k_t * m_u),
                    footprint, unilateral)  # fmt: skip
 
