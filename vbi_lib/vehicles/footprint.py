@@ -159,9 +159,13 @@ def seen_by_tyre(profile: Profile, footprint: float = DEFAULT_FOOTPRINT) -> Prof
 _EXCESS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
-def _excess_slope(profile: Profile, footprint: float) -> np.ndarray:
-    """Per sample interval, the slope ``e_k`` a one-interval feature adds to the road seen
-    through ``footprint`` (see :func:`unresolved_road_note`); remembered per profile."""
+def _excess_slope(profile: Profile, footprint: float) -> tuple[np.ndarray, np.ndarray]:
+    """The sample intervals holding a one-interval feature of the road seen through
+    ``footprint``, and the slope ``e_k`` each adds (see :func:`unresolved_road_note`).
+
+    Remembered per profile while it lives (only those few intervals: a batch shares its
+    roads, and a smooth road has none).
+    """
     cache = _EXCESS.setdefault(profile, {})
     if footprint not in cache:
         x = profile.x
@@ -173,9 +177,8 @@ def _excess_slope(profile: Profile, footprint: float) -> np.ndarray:
         outside = np.maximum(np.abs(change[:-3]), np.abs(change[3:]))
         jump = np.minimum(np.abs(into), np.abs(out))
         peak = into * out > 0.0  # the slope peaks (or dips) on the interval itself
-        excess = np.where(peak & (jump >= FEATURE_CONTRAST * outside), jump, 0.0)
-        excess.setflags(write=False)
-        cache[footprint] = excess
+        where = np.flatnonzero(peak & (jump >= FEATURE_CONTRAST * outside) & (jump > 0.0))
+        cache[footprint] = (where, jump[where])
     return cache[footprint]
 
 
@@ -189,19 +192,26 @@ def unresolved_damper_force(
     ``profile.x``) where it is reached; ``(0.0, -1, -1)`` when no damped contact meets an
     unresolved feature.  Multiplied by the speed it is the share of the axle's static load.
     """
-    best, where = 0.0, (-1, -1)
-    x = profile.x
-    first = max(0, int(np.searchsorted(x, bridge_start, side="right")) - 1)
-    last = int(np.searchsorted(x, bridge_start + bridge_length, side="left"))
-    if last <= first:
-        return best, *where
-    for a in np.flatnonzero(system.contact_damping > 0.0):
-        excess = _excess_slope(profile, float(system.footprint[a]))[first:last]
-        k = int(np.argmax(excess))
-        value = float(system.contact_damping[a] * excess[k] / system.static_loads[a])
+    best, found = 0.0, (-1, -1)
+    window = None
+    for a, damping in enumerate(system.contact_damping.tolist()):
+        if damping <= 0.0:
+            continue
+        where, excess = _excess_slope(profile, float(system.footprint[a]))
+        if where.size == 0:  # a smooth road: nothing to look for (the usual case, kept fast)
+            continue
+        if window is None:  # the intervals under an axle on the bridge
+            first = max(0, int(np.searchsorted(profile.x, bridge_start, side="right")) - 1)
+            last = int(np.searchsorted(profile.x, bridge_start + bridge_length, side="left"))
+            window = np.searchsorted(where, [first, last])
+        lo, hi = int(window[0]), int(window[1])
+        if hi <= lo:
+            continue
+        k = lo + int(np.argmax(excess[lo:hi]))
+        value = damping * float(excess[k]) / float(system.static_loads[a])
         if value > best:
-            best, where = value, (int(a), first + k)
-    return best, *where
+            best, found = value, (a, int(where[k]))
+    return best, *found
 
 
 def unresolved_road_note(
