@@ -896,6 +896,9 @@ def test_a_profile_built_from_arrays_is_warned_of_by_its_first_crossing() -> Non
         first = vbi.simulate(vbi.Bridge(10.0, 1, 2e9, 5e3), truck(), road, 10.0, 20.0)
     with warnings.catch_warnings():
         warnings.simplefilter("error", vbi.OutsideValidityWarning)  # not twice
+        # a point contact on a 0.8 m kerb sampled at 25 mm: its damper force is set by the
+        # sampling, which every crossing says (h20's UnresolvedRoadWarning); not asserted here
+        warnings.simplefilter("ignore", vbi.validity.UnresolvedRoadWarning)
         batch = vbi.simulate_many(vbi.Bridge(10.0, 1, 2e9, 5e3), truck(), road, [10.0], 20.0)
     assert any("unevenness 0.7" in n for n in first.notes), first.notes
     assert np.isfinite(batch.daf[0, 0])

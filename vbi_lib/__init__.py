@@ -39,7 +39,12 @@ from .modes import BeamModes, beam_modes
 from .profile_files import ErdFile, ProfileFileError, read_erd, read_profile
 from .profiles import Profile, iso8608_class, max_sample_spacing
 from .roughness import fit_iso8608, iri, profile_spectrum
-from .validity import ContactLossWarning, OutsideValidityWarning, VbiWarning
+from .validity import (
+    ContactLossWarning,
+    OutsideValidityWarning,
+    UnresolvedRoadWarning,
+    VbiWarning,
+)
 from .vehicle_metrics import contact_force_amplification
 from .vehicles import QuarterCar, Vehicle, VehicleSystem
 
@@ -57,6 +62,7 @@ __all__ = [
     "Profile",
     "ProfileFileError",
     "QuarterCar",
+    "UnresolvedRoadWarning",
     "VbiWarning",
     "Vehicle",
     "VehicleSystem",

@@ -214,14 +214,14 @@ RANGES: dict[str, Range] = {
         "(its frequencies on a rigid road: soft limits only)",
     ),
     "vehicle_damping_ratio": Range(
-        "damping ratio of a suspension",
+        "damping ratio of a suspension or a tyre",
         "-",
-        (0.0, 1.0),
+        (0.0, math.inf),
         (0.0, 0.5),
-        "at critical damping, 1, nothing vibrates",
+        "a damper cannot give energy back; 1 or more is a valid, overdamped suspension (VBI-2D's "
+        "verification vehicle is damped 2.09 times critical)",
         "truck suspensions are damped 5 to 30 %, the study's truck 10 %",
-        "Vehicle, Vehicle.from_frequency, QuarterCar.from_frequencies, hs20",
-        open_high=True,
+        "Vehicle, Vehicle.from_frequency, QuarterCar.from_frequencies (suspension and tyre), hs20",
     ),
     "vehicle_weight": Range(
         "weight of a vehicle (the sum of its static axle loads)",
@@ -238,8 +238,9 @@ RANGES: dict[str, Range] = {
         (0.0, 2.0),
         (0.0, 0.5),
         "a tyre touching the road over more than 2 m is no tyre",
-        "truck tyres touch the road over 0.15 to 0.3 m; the library's default is 0.25 m",
-        "Tyre, QuarterCar",
+        "truck tyres touch the road over 0.15 to 0.3 m; the library's default is 0.25 m "
+        "(the study's sprung mass: 0, its point contact)",
+        "Tyre, QuarterCar, Vehicle",
     ),
     "axle_offset": Range(
         "distance of an axle behind the first",

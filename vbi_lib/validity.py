@@ -24,6 +24,7 @@ __all__ = [
     "CostWarning",
     "FailedRowsWarning",
     "OutsideValidityWarning",
+    "UnresolvedRoadWarning",
     "VbiWarning",
     "WorkerLostWarning",
     "contact_note",
@@ -53,6 +54,22 @@ class OutsideValidityWarning(VbiWarning):
 
     The result is computed, but it is not a prediction the model was built and checked for;
     :data:`vbi_lib.ranges.RANGES` gives the intended (soft) range of each input and why.
+    """
+
+
+class UnresolvedRoadWarning(OutsideValidityWarning):
+    """A crossing's contact force is set by a road feature sharper than the profile's sampling.
+
+    A point contact with a damper (the study's sprung mass, a bilateral axle, a damped tyre
+    without a footprint) presses on the road with ``c v dr/dx``; over a feature whose rise
+    fits within one sample interval (a step, a joint's edge) that slope, and the force, grow
+    as the sampling is refined, so the peak contact force is the sampling's, not the road's.
+    The test is :func:`vbi_lib.vehicles.footprint.unresolved_road_note`; a ``footprint``
+    (the tyre's contact length) makes the force converge.
+
+    A subclass of :class:`OutsideValidityWarning` (the road's sampling is an input outside
+    what the contact force needs), of its own so that a study that reads only the bridge's
+    response, which converges whatever the sampling, can silence it alone.
     """
 
 

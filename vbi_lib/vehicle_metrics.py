@@ -20,6 +20,7 @@ import scipy.linalg
 from . import _validation as check
 from .profiles import Profile
 from .vehicles import Vehicle
+from .vehicles.footprint import footprint_average
 
 __all__ = ["ContactForceAmplification", "contact_force_amplification", "quarter_car_contact_force"]
 
@@ -71,7 +72,9 @@ def quarter_car_contact_force(
     ``m u'' = F``, ``F = k (Delta - u) + c (Delta' - u')`` with the profile linear between
     samples, so over each step the input rate is constant and the step is exact:
     the augmented state ``(u, u', Delta, Delta')`` is advanced with ``exp(M h)``.  The mass
-    starts at rest on the first sample (``u = Delta(x0)``).
+    starts at rest on the first sample (``u = Delta(x0)``).  ``Delta`` is the road the
+    vehicle's footprint sees (:func:`~vbi_lib.vehicles.footprint.footprint_average`; the
+    study's point contact, footprint 0, rides the samples).
 
     Returns
     -------
@@ -82,7 +85,8 @@ def quarter_car_contact_force(
     """
     speed = check.positive("speed", speed)
     m, k, c = vehicle.mass, vehicle.stiffness, vehicle.damping
-    x, delta = profile.x, profile.elevation
+    x = profile.x
+    delta = footprint_average(x, profile.elevation, vehicle.footprint)
     h = np.diff(x) / speed
     rate = np.diff(delta) / h
     system = np.array(

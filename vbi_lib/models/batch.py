@@ -73,8 +73,11 @@ class Batch:
 
     def lane_rows(self) -> np.ndarray:
         """Which crossings the lane kernels take, ``(n,)`` booleans: the study's sprung mass
-        (:class:`~vbi_lib.Vehicle`) on at most :data:`PEAK_SLOTS` spans (the summary's)."""
-        sprung = np.array([isinstance(v, Vehicle) for v in self.vehicles], dtype=bool)
+        (:class:`~vbi_lib.Vehicle`) without a footprint on at most :data:`PEAK_SLOTS` spans
+        (the summary's); a footprint takes the general path, whose grid averages the road."""
+        # issue 20 hook (h20): the lane kernels' walker reads the raw road, no footprint
+        sprung = np.array([isinstance(v, Vehicle) and v.footprint == 0.0 for v in self.vehicles],
+                          dtype=bool)  # fmt: skip
         return sprung[self.vehicle] & (self.n_spans() <= PEAK_SLOTS)
 
     def take(self, rows: np.ndarray) -> Batch:

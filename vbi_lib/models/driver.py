@@ -19,8 +19,9 @@ from ..costs import warn_crossing
 from ..profiles import Profile
 from ..ranges import MAX_NODES, RANGES, check_range, warn_outside
 from ..road_checks import past_the_road, road_notes
-from ..validity import ContactLossWarning, contact_note, flight_note
+from ..validity import ContactLossWarning, UnresolvedRoadWarning, contact_note, flight_note
 from ..vehicles import as_system
+from ..vehicles.footprint import unresolved_road_note, warn_unresolved_roads
 from .base import (
     DEFAULT_OMEGA_DT,
     PEAK_SLOTS,
@@ -216,6 +217,10 @@ def simulate(
         warn_outside(text)
     summary, contact, fields, note = setup.integrate(grid)
     notes += [note, *objects, *outside]
+    road_note = unresolved_road_note(system, profile, speed, bridge_start, bridge.length)
+    if road_note:  # issue 20 hook (h20): a contact force set by the road's sampling
+        notes.append(road_note)
+        warnings.warn(road_note, UnresolvedRoadWarning, stacklevel=2)
     static = setup.static_deflection()
     peaks = setup.span_peaks(summary, fields, grid)
     never = _never_pushed_down(peaks)
@@ -544,6 +549,7 @@ def simulate_many(
     defaults = kind.default_time_steps(batch)
     steps = defaults if dt is None else np.full(n, dt)
     _check_steps(kind, batch, defaults, dt)
+    warn_unresolved_roads(batch)  # issue 20 hook (h20): contact forces set by the sampling
     n_spans = batch.n_spans()
     peaks = np.full((n, max(PEAK_SLOTS, int(n_spans.max()))), np.nan)
     summaries = np.full((n, SUMMARY_SIZE), np.nan)

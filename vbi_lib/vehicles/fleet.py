@@ -145,9 +145,10 @@ def hs20(
     check.choice("body", body, ("independent", "rigid"))
     tyres = check.flag("tyres", tyres)
     omega = 2.0 * math.pi * check_range("vehicle_frequency", bounce_hz, "bounce_hz", warn=False)
-    zeta = check.damping_ratio("suspension_damping_ratio", suspension_damping_ratio)
-    # the axles and tyres warn of a damping ratio or footprint outside the intended range
-    check_range("vehicle_damping_ratio", zeta, "suspension_damping_ratio", warn=False)
+    # any ratio >= 0: 1 or more is an overdamped suspension (warned of, not refused); the
+    # axles and tyres warn of a damping ratio or footprint outside the intended range
+    zeta = check_range("vehicle_damping_ratio", suspension_damping_ratio,
+                       "suspension_damping_ratio", warn=False)  # fmt: skip
     check_range("footprint", footprint, warn=False)
     axles = []
     for i, (offset, load) in enumerate(zip((0.0, 14 * ft, 14 * ft + spacing), HS20_AXLE_LOADS,

@@ -6,6 +6,13 @@ road (profile plus bridge deflection under the wheel).  Its undamped body-bounce
 :math:`\zeta_v = c_v / (2 \sqrt{k_v m_v})`.  Given a frequency, (85) gives
 :math:`k_v = m_v \omega_v^2` and :math:`c_v = 2 \zeta_v m_v \omega_v`; when the frequency
 given is the damped one, :math:`\omega_v = 2\pi f_d / \sqrt{1 - \zeta_v^2}`.
+
+A damping ratio of 1 or more is a valid suspension (critically damped or overdamped: it
+returns to rest without oscillating; VBI-2D's verification vehicle, 5750 kg on 1595 kN/m
+and 400 kN s/m, is damped 2.09 times critical).  It has no damped frequency; both crossing
+models integrate it as any other (their default steps follow the eigenvalues of the
+coupled system, whose fast real root grows as :math:`(\zeta_v + \sqrt{\zeta_v^2 - 1})\,
+\omega_v`).
 """
 
 from __future__ import annotations
@@ -25,19 +32,31 @@ from .system import VehicleSystem
 class Vehicle:
     """A sprung mass: mass [kg], suspension stiffness [N/m] and damping coefficient [N s/m].
 
+    Parameters
+    ----------
+    mass, stiffness, damping
+        ``m_v`` [kg], ``k_v`` [N/m] > 0, ``c_v`` [N s/m] >= 0 (any damping ratio).
+    footprint
+        Contact length [m] over which the wheel averages the road
+        (:mod:`~vbi_lib.vehicles.footprint`); 0 (default) is the study's point contact, which
+        reproduces its tables.  A point contact's damper force over a road feature sharper
+        than the profile's sampling is set by the sampling; a crossing says so
+        (:func:`~vbi_lib.vehicles.footprint.unresolved_road_note`).
+
     Raises
     ------
     TypeError
         A value that is not a number.
     ValueError
-        A mass, damping ratio or bounce frequency outside its range of validity
-        (:data:`vbi_lib.ranges.RANGES`: ``vehicle_mass``, ``vehicle_damping_ratio``,
-        ``vehicle_frequency``), a stiffness not > 0 or a damping < 0.
+        A mass or bounce frequency outside its range of validity
+        (:data:`vbi_lib.ranges.RANGES`: ``vehicle_mass``, ``vehicle_frequency``), a stiffness
+        not > 0, a damping < 0, a footprint outside ``footprint``'s range.
 
     Warns
     -----
     OutsideValidityWarning
-        A mass or damping ratio outside the intended range (the frequency is judged when the
+        A mass, damping ratio (``vehicle_damping_ratio``: above 0.5, overdamped suspensions
+        included) or footprint outside the intended range (the frequency is judged when the
         vehicle's :attr:`system` is built).
 
     Examples
@@ -48,19 +67,32 @@ class Vehicle:
     >>> v = Vehicle(100 * u.slinch, 63165.5 * u.lbf / u.inch, 0.0)
     >>> round(v.frequency_hz, 2)
     4.0
+
+    VBI-2D's verification vehicle is overdamped (accepted, with a warning that 2.09 lies
+    outside the intended range of suspension damping):
+
+    >>> import warnings
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore")
+    ...     round(Vehicle(5750.0, 1595e3, 4e5).damping_ratio, 2)
+    2.09
     """
 
     mass: float
     stiffness: float
     damping: float = 0.0
+    footprint: float = 0.0
 
     def __post_init__(self) -> None:
         mass = check_range("vehicle_mass", self.mass, "mass", warn=False)
         object.__setattr__(self, "mass", mass)
         object.__setattr__(self, "stiffness", check.positive("stiffness", self.stiffness))
         object.__setattr__(self, "damping", check.non_negative("damping", self.damping))
-        zeta = check.damping_ratio("damping_ratio (from damping)", self.damping_ratio)
-        check_range("vehicle_damping_ratio", zeta, "damping_ratio (from damping)", warn=False)
+        footprint = check_range("footprint", self.footprint, warn=False)
+        object.__setattr__(self, "footprint", footprint)
+        # any ratio >= 0: 1 or more is an overdamped suspension (noted and warned of)
+        check_range("vehicle_damping_ratio", self.damping_ratio, "damping_ratio (from damping)",
+                    warn=False)  # fmt: skip
         check_range(
             "vehicle_frequency", self.frequency_hz, "frequency_hz (from mass and stiffness)",
             warn=False,
@@ -70,13 +102,14 @@ class Vehicle:
 
     @property
     def notes(self) -> tuple[str, ...]:
-        """Sentences on the mass and damping ratio outside their intended ranges (what the
-        constructor warns of); the frequency is judged by :attr:`system`, whose
+        """Sentences on the mass, damping ratio and footprint outside their intended ranges
+        (what the constructor warns of); the frequency is judged by :attr:`system`, whose
         :attr:`~vbi_lib.vehicles.VehicleSystem.notes` hold these and its own."""
         notes = (
             outside_note("vehicle_mass", self.mass, "mass"),
             outside_note("vehicle_damping_ratio", self.damping_ratio,
                          "damping_ratio (from damping)"),
+            outside_note("footprint", self.footprint, "footprint"),
         )  # fmt: skip
         return tuple(n for n in notes if n)
 
@@ -87,6 +120,7 @@ class Vehicle:
         frequency_hz: float,
         damping_ratio: float = 0.1,
         damped: bool = False,
+        footprint: float = 0.0,
     ) -> Vehicle:
         """A sprung mass with a given body-bounce frequency and damping ratio (85).
 
@@ -97,9 +131,19 @@ class Vehicle:
         frequency_hz
             Body-bounce frequency [Hz]; the undamped one unless ``damped=True``.
         damping_ratio
-            Fraction of critical damping, in [0, 1).
+            Fraction of critical damping, >= 0 (1 or more: an overdamped suspension).
         damped
-            ``True`` when ``frequency_hz`` is the damped frequency ``f_d`` (Table 2.13.9).
+            ``True`` when ``frequency_hz`` is the damped frequency ``f_d`` (Table 2.13.9);
+            only for ``damping_ratio < 1`` (an overdamped suspension has no damped
+            frequency).
+        footprint
+            Contact length [m] (see the class); 0 by default, the study's point contact.
+
+        Raises
+        ------
+        ValueError
+            A mass, frequency or damping ratio outside its range
+            (:data:`vbi_lib.ranges.RANGES`), or ``damped=True`` with ``damping_ratio >= 1``.
 
         Examples
         --------
@@ -112,12 +156,24 @@ class Vehicle:
         """
         mass = check_range("vehicle_mass", mass, "mass", warn=False)
         frequency = check_range("vehicle_frequency", frequency_hz, "frequency_hz", warn=False)
-        zeta = check.damping_ratio("damping_ratio", damping_ratio)
-        zeta = check_range("vehicle_damping_ratio", zeta, "damping_ratio", warn=False)
+        zeta = check_range("vehicle_damping_ratio", damping_ratio, "damping_ratio", warn=False)
         omega = 2.0 * math.pi * frequency
         if check.flag("damped", damped):
+            if zeta >= 1.0:
+                raise ValueError(
+                    f"damped=True with damping_ratio={damping_ratio!r}: a suspension damped at "
+                    "or above critical (1) does not oscillate and has no damped frequency; give "
+                    "the undamped frequency sqrt(k/m)/(2 pi) with damped=False"
+                )
             omega /= math.sqrt(1.0 - zeta**2)
-        return cls(mass, mass * omega**2, 2.0 * zeta * mass * omega)
+        damping = 2.0 * zeta * mass * omega
+        if not math.isfinite(damping):
+            raise ValueError(
+                f"damping_ratio={damping_ratio!r} gives a damping coefficient too large to hold "
+                f"({damping!r} N s/m) with mass={mass!r} kg at {frequency!r} Hz; give a smaller "
+                "damping_ratio"
+            )
+        return cls(mass, mass * omega**2, damping, footprint)
 
     @property
     def circular_frequency(self) -> float:
@@ -136,8 +192,21 @@ class Vehicle:
 
     @property
     def damped_frequency_hz(self) -> float:
-        """Damped frequency ``f_v sqrt(1 - zeta^2)`` [Hz]."""
-        return self.frequency_hz * math.sqrt(1.0 - self.damping_ratio**2)
+        """Damped frequency ``f_v sqrt(1 - zeta^2)`` [Hz].
+
+        Raises
+        ------
+        ValueError
+            The suspension is damped at or above critical (``damping_ratio >= 1``): it does not
+            oscillate and has no damped frequency.
+        """
+        zeta = self.damping_ratio
+        if zeta >= 1.0:
+            raise ValueError(
+                f"damping_ratio={zeta:.4g} is at or above critical (1): this suspension does not "
+                "oscillate and has no damped frequency; use frequency_hz (undamped)"
+            )
+        return self.frequency_hz * math.sqrt(1.0 - zeta**2)
 
     @property
     def weight(self) -> float:
@@ -147,7 +216,7 @@ class Vehicle:
     @cached_property
     def system(self) -> VehicleSystem:
         """The sprung mass as a :class:`~vbi_lib.vehicles.VehicleSystem`: one degree of freedom,
-        one bilateral contact whose spring and damper are the suspension, no footprint."""
+        one bilateral contact whose spring and damper are the suspension, and its footprint."""
         return VehicleSystem(
             mass=[[self.mass]],
             stiffness=[[0.0]],
@@ -158,15 +227,18 @@ class Vehicle:
             contact_stiffness=[self.stiffness],
             contact_damping=[self.damping],
             unilateral=[False],
-            footprint=[0.0],
+            footprint=[self.footprint],
             dof_names=("sprung mass",),
             name="sprung mass",
             given_notes=self.notes,
         )
 
     def __repr__(self) -> str:
+        contact = (
+            f", footprint = {display.short(self.footprint, 'spacing')}" if self.footprint else ""
+        )
         return (
             f"Vehicle(m = {display.short(self.mass, 'mass')} "
             f"(weight {display.short(self.weight, 'weight')}), f = {self.frequency_hz:.2f} Hz, "
-            f"zeta = {self.damping_ratio:.1%})"
+            f"zeta = {self.damping_ratio:.1%}{contact})"
         )

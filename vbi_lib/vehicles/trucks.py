@@ -153,16 +153,19 @@ class QuarterCar:
 
     @property
     def notes(self) -> tuple[str, ...]:
-        """Sentences on the masses, the suspension's damping ratio and the footprint outside
-        their intended ranges (what the constructor warns of); the frequencies are judged by
+        """Sentences on the masses, the suspension's and tyre's damping ratios and the
+        footprint outside their intended ranges (what the constructor warns of); the
+        frequencies are judged by
         :attr:`system`, whose :attr:`~vbi_lib.vehicles.VehicleSystem.notes` hold these and
         its own."""
         zeta = _damping_ratio(self.suspension_damping, self.suspension_stiffness,
                               self.sprung_mass)  # fmt: skip
+        zeta_t = _damping_ratio(self.tyre_damping, self.tyre_stiffness, self.unsprung_mass)
         return _notes(
             ("vehicle_mass", self.sprung_mass, "sprung_mass"),
             ("unsprung_mass", self.unsprung_mass, "unsprung_mass"),
             ("vehicle_damping_ratio", zeta, "suspension_damping_ratio"),
+            ("vehicle_damping_ratio", zeta_t, "tyre_damping_ratio"),
             ("footprint", self.footprint, "footprint"),
         )
 
@@ -183,7 +186,9 @@ class QuarterCar:
         ``body_hz`` is the sprung mass on its suspension alone,
         :math:`\\sqrt{k_s/m_s}/2\\pi`; ``axle_hop_hz`` the unsprung mass between the
         suspension and the tyre, :math:`\\sqrt{(k_s + k_t)/m_u}/2\\pi`.  The damping
-        ratios are of those two oscillators.
+        ratios are of those two oscillators (the suspension's with the sprung mass, the
+        tyre's with the unsprung mass), each >= 0: 1 or more is overdamped, accepted and
+        warned of (``vehicle_damping_ratio`` in :data:`vbi_lib.ranges.RANGES`).
         """
         m_s = check_range("vehicle_mass", sprung_mass, "sprung_mass", warn=False)
         m_u = check_range("unsprung_mass", unsprung_mass, warn=False)
@@ -197,9 +202,12 @@ class QuarterCar:
                 f"axle_hop_hz={axle_hop_hz!r} is too low for body_hz={body_hz!r} with these "
                 f"masses: the tyre stiffness would be {k_t:.3g} N/m; raise axle_hop_hz"
             )
-        z_s = check.damping_ratio("suspension_damping_ratio", suspension_damping_ratio)
-        check_range("vehicle_damping_ratio", z_s, "suspension_damping_ratio", warn=False)
-        z_t = check.damping_ratio("tyre_damping_ratio", tyre_damping_ratio)
+        # any damping ratio >= 0: 1 or more is an overdamped suspension (or tyre), warned of
+        # by the quarter car built here, whose notes carry it
+        z_s = check_range("vehicle_damping_ratio", suspension_damping_ratio,
+                          "suspension_damping_ratio", warn=False)  # fmt: skip
+        z_t = check_range("vehicle_damping_ratio", tyre_damping_ratio, "tyre_damping_ratio",
+                          warn=False)  # fmt: skip
         return cls(m_s, m_u, k_s, 2 * z_s * m_s * w_s, k_t, 2 * z_t * math.sqrt(k_t * m_u),
                    footprint, unilateral)  # fmt: skip
 
