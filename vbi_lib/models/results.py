@@ -31,7 +31,15 @@ from ..bridges import Bridge
 from ..modes import BeamModes
 from ..validity import ContactFlags
 from ..vehicles import VehicleSystem, as_system
-from .sections import SectionResponse, check_method, section_history, static_counterpart
+from .sections import (
+    FACES,
+    SectionResponse,
+    check_method,
+    check_side,
+    governing_faces,
+    section_history,
+    static_counterpart,
+)
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -228,11 +236,13 @@ class Crossing(ContactFlags):
         on = (positions >= -1e-12) & (positions <= self.bridge.length + 1e-12)
         return np.where(on, self.axle_contact_force, 0.0), positions
 
-    def _section(self, x: float | np.ndarray, effect: str, method: str) -> np.ndarray:
+    def _section(
+        self, x: float | np.ndarray, effect: str, method: str, side: str | tuple[str, ...] = "left"
+    ) -> np.ndarray:
         sections = _stations(x)
         modes, q = self.modal_history()
         loads, positions = self._axles()
-        values = section_history(modes, q, loads, positions, sections, effect, method)
+        values = section_history(modes, q, loads, positions, sections, effect, method, side)
         return values[:, 0] if np.ndim(x) == 0 else values
 
     def displacement_at(
@@ -262,23 +272,32 @@ class Crossing(ContactFlags):
         """
         return self._section(x, "moment", method)
 
-    def shear_at(self, x: float | np.ndarray, method: str = "mode-acceleration") -> np.ndarray:
+    def shear_at(
+        self, x: float | np.ndarray, method: str = "mode-acceleration", side: str = "left"
+    ) -> np.ndarray:
         """Shear history [N] (``V = dM/dx``) at stations ``x`` from the bridge start.
 
-        At a station holding the axle or an interior support, the value just to its left.
+        The shear jumps at an axle and, by the reaction, at an interior support: ``side``
+        gives the face, ``"left"`` (default: the value just left of the station) or
+        ``"right"`` (just right of it); at the bridge's ends both give the face on the beam.
         By the mode-acceleration method by default; the mode-displacement series
         (third derivatives of the modes) does not converge under a concentrated load.
-        Shapes and errors as :meth:`displacement_at`.
+        Shapes and errors as :meth:`displacement_at` (and an unknown ``side``).
         """
-        return self._section(x, "shear", method)
+        return self._section(x, "shear", method, check_side(side))
 
-    def sections(self, x: float | np.ndarray, method: str = "mode-acceleration") -> SectionResponse:
+    def sections(
+        self, x: float | np.ndarray, method: str = "mode-acceleration", side: str = "governing"
+    ) -> SectionResponse:
         """Displacement, moment and shear at sections, their extremes and DAFs.
 
         Each effect's static counterpart is its extreme when the vehicle's weight crawls
         across (:func:`vbi_lib.beam_statics.static_envelope`), so each section and effect
         has its own DAF; the result also gives where and when each extreme occurs and the
-        other effects at that instant.
+        other effects at that instant.  At an interior support the shear jumps by the
+        reaction: by default the result gives the governing face, the one whose static shear
+        is the larger in size (the design shear), and names it in ``faces`` (and the
+        ``face`` column of ``to_dataframe``).
 
         Parameters
         ----------
@@ -286,6 +305,9 @@ class Crossing(ContactFlags):
             Stations from the bridge start [m].
         method
             ``"mode-acceleration"`` (default) or ``"mode-displacement"``.
+        side
+            Face of the shear at a support: ``"governing"`` (default), ``"left"`` or
+            ``"right"``.
 
         Returns
         -------
@@ -294,13 +316,19 @@ class Crossing(ContactFlags):
         Raises
         ------
         ValueError
-            A station off the bridge, an unknown method.
+            A station off the bridge, an unknown method or side.
         """
         method = check_method(method)
+        side = check_side(side, FACES)
         sections = _stations(x)
         modes, _ = self.modal_history()
         system = as_system(self.vehicle)
-        static = static_counterpart(modes, sections, system.static_loads, system.offsets, method)
+        axles = (system.static_loads, system.offsets)
+        if side == "governing":
+            faces = governing_faces(modes, sections, *axles, method)
+        else:
+            faces = (side,) * sections.size
+        static = static_counterpart(modes, sections, *axles, method, faces)
         plural = "s" if modes.count > 1 else ""
         notes = [
             f"section responses by the {method} method with {modes.count} mode{plural}; "
@@ -315,7 +343,7 @@ class Crossing(ContactFlags):
             position=self.position - self.bridge_start,
             displacement=self._section(sections, "displacement", method),
             moment=self._section(sections, "moment", method),
-            shear=self._section(sections, "shear", method),
+            shear=self._section(sections, "shear", method, faces),
             static=static,
             method=method,
             modes=modes.count,

@@ -36,11 +36,20 @@ dynamic extremes are taken at the crossing's nodes (steps of ``speed * dt``).
 
 For the one-coordinate model (one span or two equal spans) the same formulas hold with its
 single shape, the first mode: it gives the exact statics plus one mode's dynamics.
+
+**Both faces of a support.**  The shear jumps by the reaction at an interior support, and the
+design shear is on the larger face.  Every shear here is on a named face (``side``:
+``"left"``, just left of the station, the default; ``"right"``, just right of it), the
+exact part from :func:`~vbi_lib.beam_statics.continuous_statics` on that face and the modal
+part from the third derivative of the modes in the span on that side.  :meth:`Crossing.sections
+<vbi_lib.models.results.Crossing.sections>` gives, at a support station, the face whose
+static shear is the larger in size (:func:`governing_faces`) and names it
+(:attr:`SectionResponse.faces`).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 from typing import TYPE_CHECKING
 
@@ -51,11 +60,13 @@ from .. import display
 from ..beam_statics import (
     EFFECTS,
     QUANTITY,
+    SIDES,
     StaticEnvelope,
     continuous_statics,
     effect_index,
     envelope,
     static_envelope,
+    support_face,
 )
 from ..bridges import Bridge
 from ..modes import BeamModes
@@ -63,10 +74,21 @@ from ..modes import BeamModes
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
-__all__ = ["EFFECTS", "METHODS", "SectionResponse", "section_history", "static_counterpart"]
+__all__ = [
+    "EFFECTS",
+    "FACES",
+    "METHODS",
+    "SectionResponse",
+    "governing_faces",
+    "section_history",
+    "static_counterpart",
+]
 
 #: How section responses are computed from the modal coordinates.
 METHODS = ("mode-acceleration", "mode-displacement")
+#: Which face of a support a section's shear is given on: the larger (the design shear), or
+#: one side (:data:`vbi_lib.beam_statics.SIDES`).
+FACES = ("governing", *SIDES)
 _ORDER = {"displacement": 0, "moment": 2, "shear": 3}
 
 
@@ -77,9 +99,56 @@ def check_method(method: object) -> str:
     return str(method)
 
 
-def _modal_shapes(modes: BeamModes, effect: str, x: np.ndarray) -> np.ndarray:
-    """``r_n(x)``, shape ``(n_x, N)``: phi (displacement), EI phi'' (moment), EI phi'''."""
+def check_side(side: object, allowed: tuple[str, ...] = SIDES) -> str:
+    """A face name of ``allowed``; ``ValueError`` naming them otherwise."""
+    if side not in allowed:
+        raise ValueError(f"side={side!r} is not known; use one of {', '.join(allowed)}")
+    return str(side)
+
+
+def _sides(side: str | tuple[str, ...], n: int) -> tuple[str, ...]:
+    if isinstance(side, str):
+        return (check_side(side),) * n
+    sides = tuple(check_side(s) for s in side)
+    if len(sides) != n:
+        raise ValueError(f"side={side!r} must be one face, or one for each of the {n} sections")
+    return sides
+
+
+def _interior_support(modes: BeamModes, x: np.ndarray) -> np.ndarray:
+    """Whether each station is an interior support (to rounding), ``(n_x,)``."""
+    inner = modes.supports[1:-1]
+    if inner.size == 0:
+        return np.zeros(x.shape, dtype=bool)
+    return np.abs(x[:, None] - inner[None, :]).min(axis=1) <= 1e-9 * modes.bridge.length
+
+
+def _third_right(modes: BeamModes, x: np.ndarray) -> np.ndarray:
+    """The third derivative of the modes just right of stations ``x``, ``(n_x, N)``.
+
+    In span ``j`` (``s`` from its left support) mode ``n`` has ``phi''' = k^3 (-a cos ks +
+    b sin ks - c e^(-ks) + d e^(-k (L_j - s)))``; just right of a support, ``s = 0`` of the
+    span on its right.
+    """
+    supports = modes.supports
+    j = np.clip(np.searchsorted(supports, x, side="right") - 1, 0, supports.size - 2)
+    k = modes.wavenumber[None, :]
+    coef = modes.coefficients[:, j, :].transpose(1, 0, 2)  # (n_x, N, 4)
+    length = (supports[j + 1] - supports[j])[:, None]
+    return k**3 * (-coef[..., 0] - coef[..., 2] + coef[..., 3] * np.exp(-k * length))
+
+
+def _modal_shapes(
+    modes: BeamModes, effect: str, x: np.ndarray, side: str | tuple[str, ...] = "left"
+) -> np.ndarray:
+    """``r_n(x)``, shape ``(n_x, N)``: phi (displacement), EI phi'' (moment) or EI phi'''
+    (the shear, on face ``side`` at an interior support: one for all stations or one each)."""
     values = modes.derivative(x, _ORDER[effect])
+    if effect == "shear":
+        right = np.array([s == "right" for s in _sides(side, x.size)], dtype=bool)
+        right &= _interior_support(modes, x)
+        if right.any():
+            values[right] = _third_right(modes, x[right])
     return values if effect == "displacement" else modes.bridge.EI * values
 
 
@@ -91,6 +160,7 @@ def section_history(
     sections: np.ndarray,
     effect: str,
     method: str = "mode-acceleration",
+    side: str | tuple[str, ...] = "left",
 ) -> np.ndarray:
     """History of one effect at sections, shape ``(n_time, n_s)``.
 
@@ -110,38 +180,55 @@ def section_history(
         ``"displacement"`` [m, up], ``"moment"`` [N m, sagging], ``"shear"`` [N, dM/dx].
     method
         ``"mode-acceleration"`` or ``"mode-displacement"`` (module docstring).
+    side
+        Face of the shear at an interior support (``"left"`` or ``"right"``), one for every
+        section or one each.
     """
     effect_index(effect)
     check_method(method)
-    shapes = _modal_shapes(modes, effect, sections)  # (n_s, N)
+    sides = _sides(side, sections.size)
+    shapes = _modal_shapes(modes, effect, sections, sides)  # (n_s, N)
     values = q @ shapes.T
     if method == "mode-displacement":
         return values
     bridge = modes.bridge
     length = bridge.length
     e = EFFECTS.index(effect)
+    groups = [(face, np.array([s == face for s in sides])) for face in sorted(set(sides))]
     for i in range(loads.shape[1]):
         on = (positions[:, i] >= 0.0) & (positions[:, i] <= length) & (loads[:, i] != 0.0)
         if not on.any():
             continue
         a = positions[on, i]
-        statics = continuous_statics(sections[None, :], a[:, None], bridge.spans, bridge.EI)
-        exact = (-statics.deflection, statics.moment, statics.shear)[e]
         truncated = -(modes.shape(a) / modes.omega**2) @ shapes.T
+        exact = np.empty_like(truncated)
+        for face, take in groups:
+            statics = continuous_statics(
+                sections[None, take], a[:, None], bridge.spans, bridge.EI, side=face
+            )
+            exact[:, take] = (-statics.deflection, statics.moment, statics.shear)[e]
         values[on] += loads[on, i, None] * (exact - truncated)
     return values
 
 
 def _modal_envelope(
-    modes: BeamModes, sections: np.ndarray, axle_loads: np.ndarray, axle_offsets: np.ndarray
+    modes: BeamModes,
+    sections: np.ndarray,
+    axle_loads: np.ndarray,
+    axle_offsets: np.ndarray,
+    sides: tuple[str, ...],
 ) -> StaticEnvelope:
-    shapes = [_modal_shapes(modes, effect, sections) for effect in EFFECTS]
+    shapes = [_modal_shapes(modes, effect, sections, sides) for effect in EFFECTS]
 
     def influence(a: np.ndarray) -> np.ndarray:
         static = -modes.shape(a) / modes.omega**2  # (n_a, N): q_n under a unit load
         return np.stack([static @ r.T for r in shapes])
 
-    return envelope(influence, modes.supports, sections, axle_loads, axle_offsets)
+    result = envelope(influence, modes.supports, sections, axle_loads, axle_offsets)
+    faces = tuple(
+        support_face(float(x), modes.supports, s) for x, s in zip(sections, sides, strict=True)
+    )
+    return replace(result, faces=faces)
 
 
 def static_counterpart(
@@ -150,35 +237,73 @@ def static_counterpart(
     axle_loads: np.ndarray,
     axle_offsets: np.ndarray,
     method: str = "mode-acceleration",
+    side: str | tuple[str, ...] = "left",
 ) -> StaticEnvelope:
     """The static envelope the method's DAF divides by: exact, or from the N modes.
 
+    ``side``: the face of the shear at interior supports, one for all sections or one each.
     Memoised: a study asks for the same bridge, axles and sections crossing after crossing.
     """
     method = check_method(method)
     key = tuple(float(x) for x in np.ravel(sections))
+    sides = _sides(side, len(key))
     loads = tuple(float(p) for p in np.ravel(axle_loads))
     offsets = tuple(float(o) for o in np.ravel(axle_offsets))
     if method == "mode-displacement":
-        return _cached_modal(modes, key, loads, offsets)
-    return _cached_exact(modes.bridge.spans, modes.bridge.EI, key, loads, offsets)
+        return _cached_modal(modes, key, loads, offsets, sides)
+    return _cached_exact(modes.bridge.spans, modes.bridge.EI, key, loads, offsets, sides)
+
+
+def governing_faces(
+    modes: BeamModes,
+    sections: np.ndarray,
+    axle_loads: np.ndarray,
+    axle_offsets: np.ndarray,
+    method: str = "mode-acceleration",
+) -> tuple[str, ...]:
+    """The face of the design shear at each section, by the method's statics.
+
+    At an interior support the face whose static shear (its larger extreme in size) is the
+    larger, ``"left"`` when they tie; ``"left"`` elsewhere (one face only).
+    """
+    sections = np.asarray(sections, dtype=float)
+    inner = _interior_support(modes, sections)
+    if not inner.any():
+        return ("left",) * sections.size
+    left = static_counterpart(modes, sections, axle_loads, axle_offsets, method, "left")
+    right = static_counterpart(modes, sections, axle_loads, axle_offsets, method, "right")
+    e = EFFECTS.index("shear")
+
+    def size(env: StaticEnvelope) -> np.ndarray:
+        return np.maximum(np.abs(env.maximum[e]), np.abs(env.minimum[e]))
+
+    larger = inner & (size(right) > size(left) * (1.0 + 1e-12))
+    return tuple("right" if bigger else "left" for bigger in larger)
 
 
 def _frozen(envelope_: StaticEnvelope) -> StaticEnvelope:
     for array in vars(envelope_).values():
-        array.setflags(write=False)
+        if isinstance(array, np.ndarray):
+            array.setflags(write=False)
     return envelope_
 
 
 @lru_cache(maxsize=256)
-def _cached_exact(spans: tuple, EI: float, sections: tuple, loads: tuple, offsets: tuple):  # noqa: ANN202, N803
-    return _frozen(static_envelope(spans, EI, sections, loads, offsets))
+def _cached_exact(  # noqa: ANN202
+    spans: tuple,
+    EI: float,
+    sections: tuple,
+    loads: tuple,
+    offsets: tuple,
+    sides: tuple,  # noqa: N803
+):
+    return _frozen(static_envelope(spans, EI, sections, loads, offsets, side=sides))
 
 
 @lru_cache(maxsize=256)
-def _cached_modal(modes: BeamModes, sections: tuple, loads: tuple, offsets: tuple):  # noqa: ANN202
+def _cached_modal(modes: BeamModes, sections: tuple, loads: tuple, offsets: tuple, sides: tuple):  # noqa: ANN202
     arrays = (np.array(sections), np.array(loads), np.array(offsets))
-    return _frozen(_modal_envelope(modes, *arrays))
+    return _frozen(_modal_envelope(modes, *arrays, sides))
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
@@ -199,7 +324,8 @@ class SectionResponse:
     displacement, moment, shear
         Histories ``(n_time, n_s)``.
     static
-        The static counterpart (:class:`~vbi_lib.beam_statics.StaticEnvelope`).
+        The static counterpart (:class:`~vbi_lib.beam_statics.StaticEnvelope`); its
+        ``faces`` are the faces the shear is given on (:attr:`faces`).
     method, modes
         How the responses were computed, and the number of modes.
     lost_contact
@@ -221,6 +347,12 @@ class SectionResponse:
     modes: int
     lost_contact: bool = False
     notes: tuple[str, ...] = ()
+
+    @property
+    def faces(self) -> tuple[str, ...]:
+        """Face of the shear at each section: ``"left"`` or ``"right"`` at a support (the
+        governing, larger one unless another was asked for), ``""`` inside a span."""
+        return self.static.faces or ("",) * self.sections.size
 
     def history(self, effect: str) -> np.ndarray:
         """History of one effect at every section, ``(n_time, n_s)``."""
@@ -285,10 +417,11 @@ class SectionResponse:
     def to_dataframe(self) -> pd.DataFrame:
         """One row per section, effect and sense, in display units.
 
-        Columns: section, effect, sense (``max``/``min``), whether it governs the DAF, the
-        effect's unit, the dynamic and static extremes (in that unit), their ratio (the
-        DAF; NaN where the static extreme is 0), the time and first-axle position of the
-        dynamic extreme, the three effects at that instant and ``lost contact``.
+        Columns: section, effect, face (of the shear at a support, ``left`` or ``right``;
+        else empty), sense (``max``/``min``), whether it governs the DAF, the effect's unit,
+        the dynamic and static extremes (in that unit), their ratio (the DAF; NaN where the
+        static extreme is 0), the time and first-axle position of the dynamic extreme, the
+        three effects at that instant and ``lost contact``.
         """
         rows = []
         governing = self.governing
@@ -303,6 +436,7 @@ class SectionResponse:
                     row = {
                         display.label("section", "length"): display.value(x, "length"),
                         "effect": effect,
+                        "face": self.faces[i] if effect == "shear" else "",
                         "sense": sense,
                         "governs": bool(governing[e, i] == (1 if sense == "max" else -1)),
                         "unit": display.symbol(quantity),
