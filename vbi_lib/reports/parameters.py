@@ -1,18 +1,27 @@
 """Report parameters: the nested YAML an engineer writes, checked key by key before anything runs.
 
-A parameter file names the bridge, the truck, the road and the speeds::
+A parameter file names the bridge, the vehicle, the road, the speeds and what to report::
 
-    title: I-76 span 3
-    bridge: {span: 140 ft, k_mid: 222278 lbf/in, first_frequency: 2.08 Hz}
-    vehicle: {mass: 200 lbf*s**2/in, frequency: 2.5 Hz, damping_ratio: 0.10}
-    profile: {file: deck.csv, length_unit: inch}
-    speeds: [30 mph, 70 mph]
+    title: Three spans under the HS20
+    bridge: {spans: [90 ft, 120 ft, 90 ft], EI: 5.3e11 kip*in**2, mass_per_length: 11 kip/ft}
+    vehicle: {type: hs20, rear_axle_spacing: [14 ft, 30 ft]}
+    profile: {iso_class: B, seed: 7}
+    speeds: [35 mph, 55 mph, 70 mph]
+    effects: [displacement, moment, shear]
 
 Every dimensional value is one number and one unit, as text, read strictly by
-:func:`vbi_lib.units.read_quantity`; every key has a plausible range (:data:`SCHEMA`);
-booleans are YAML booleans; lists are YAML lists.  A key that is not known gets a
-"did you mean".  Every refusal is a :class:`ParameterError` naming the key
-(``bridge.span``), the value given and what is allowed.
+:func:`vbi_lib.units.read_quantity`; booleans are YAML booleans; lists are YAML lists.  A key
+that is not known gets a "did you mean"; a key that belongs to another vehicle type says
+which.  Every refusal is a :class:`ParameterError` naming the key (``bridge.span``), the
+value given and what is allowed.
+
+**Ranges.**  Every quantity's range is the intended (soft) range of its input in
+:data:`vbi_lib.ranges.RANGES`, the library's one table (its hard range where it has no soft
+one): a report is filed for the use the model was made and checked for, so a value outside
+it is refused here, where the library would only warn.  ``Key.range`` names the entry.  A
+mass outside a truck's range (``truck_mass``) that another unit of the same number would
+put inside is most likely a unit slip, and the message names it (``77.2 kN``: did you mean
+``77.2 kip``?).
 """
 
 from __future__ import annotations
@@ -27,10 +36,14 @@ from pathlib import Path
 from typing import Any
 
 from .. import units as u
+from ..beam_statics import DIRECTIONS, EFFECTS
+from ..ranges import RANGES
 
 __all__ = [
     "DEFAULT_TITLE",
     "SCHEMA",
+    "VEHICLE_KEYS",
+    "VEHICLE_TYPES",
     "BridgeParameters",
     "ParameterError",
     "ProfileParameters",
@@ -46,12 +59,27 @@ DEFAULT_TITLE = "Dynamic amplification of a bridge under one truck"
 #: report show US customary units first (SI alongside).
 US_UNITS = {"foot", "inch", "mile", "yard", "mile_per_hour", "force_pound", "kip", "slinch"}
 
+#: Vehicle types and the keys of ``vehicle`` each takes (``type`` aside).
+VEHICLE_KEYS: dict[str, tuple[str, ...]] = {
+    "sprung-mass": ("mass", "frequency", "damping_ratio", "damped"),
+    "quarter-car": (
+        "mass", "unsprung_mass", "frequency", "tyre_stiffness", "damping_ratio", "footprint",
+    ),
+    "hs20": ("rear_axle_spacing", "frequency", "damping_ratio", "tyres", "body", "footprint"),
+    "hl93-truck": (
+        "rear_axle_spacing", "frequency", "damping_ratio", "tyres", "body", "footprint",
+    ),
+    "hl93-tandem": ("frequency", "damping_ratio", "tyres", "body", "footprint"),
+    "axles": ("loads", "spacings", "frequency", "damping_ratio", "tyres", "body", "footprint"),
+}  # fmt: skip
+VEHICLE_TYPES = tuple(VEHICLE_KEYS)
+
 
 class ParameterError(ValueError):
     """A report parameter that cannot be used; the message names the key, value and rule."""
 
     def __init__(self, key: str, value: object, rule: str, message: str | None = None) -> None:
-        shown = "(missing)" if value is _MISSING else repr(value)
+        shown = "(missing)" if value is _MISSING else _short(value)
         super().__init__(message or (f"{key}={shown} {rule}" if key else rule))
         self.key = key
         self.value = value
@@ -61,62 +89,107 @@ class ParameterError(ValueError):
 _MISSING = object()
 
 
+def _short(value: object, limit: int = 200) -> str:
+    """``repr`` of a value, cut to ``limit`` characters (a huge value never fills a message)."""
+    text = repr(value)
+    return text if len(text) <= limit else text[: limit - 5] + " ...)"
+
+
 @dataclass(frozen=True)
 class Key:
-    """One parameter: its kind, plausible range (SI), default and a line of help."""
+    """One parameter: its kind, the row of :data:`vbi_lib.ranges.RANGES` holding its range,
+    its default and a line of help."""
 
     kind: str
     help: str
-    low: float | None = None
-    high: float | None = None
+    range: str | None = None
     default: Any = _MISSING
     choices: tuple[str, ...] = ()
 
+    @property
+    def bounds(self) -> tuple[float, float]:
+        """The range [SI]: the entry's soft (intended) range, else its hard one."""
+        spec = RANGES[self.range]
+        return spec.soft or spec.hard
 
-#: Every key a parameter file may hold, by section.  Ranges are in SI units.
+    @property
+    def open_low(self) -> bool:
+        """Whether the lower bound itself is excluded (a speed > 0)."""
+        spec = RANGES[self.range]
+        return spec.open_low and (spec.soft is None or spec.soft[0] == spec.hard[0])
+
+
+#: Every key a parameter file may hold, by section.  Ranges come from RANGES.
 SCHEMA: dict[str, Any] = {
-    "title": Key("text", "title of the report (plain text)", 1, 200, DEFAULT_TITLE),
+    "title": Key("text", "title of the report (plain text, at most 200 characters)",
+                 default=DEFAULT_TITLE),
     "bridge": {
-        "span": Key("length", "length of each span", 3.0, 300.0),
-        "n_spans": Key("int", "1 (simple span) or 2 (two equal continuous spans)", 1, 2, 1),
-        "k_mid": Key("stiffness", "midspan stiffness of the path, load / deflection", 1e5, 1e11),
-        "EI": Key("flexural_rigidity", "flexural rigidity of the path's beam", 1e7, 1e14),
-        "mass_per_length": Key(
-            "mass_per_length", "mass (or weight) per length of the path's beam", 50.0, 2e5
-        ),
-        "first_frequency": Key("frequency", "first natural frequency", 0.2, 50.0),
-        "damping_ratio": Key("ratio", "fraction of critical damping", 0.0, 0.2, 0.01),
+        "span": Key("length", "length of each of n_spans equal spans", "span"),
+        "spans": Key("lengths", "span lengths from the first support, a YAML list", "span"),
+        "n_spans": Key("int", "number of equal spans of span (1, 2: the study's)", "n_spans", 1),
+        "k_mid": Key("stiffness", "midspan stiffness of the path, load / deflection (one span "
+                     "or two equal spans)", "k_mid"),
+        "EI": Key("flexural_rigidity", "flexural rigidity of the path's beam (or one per span, "
+                  "equal)", "EI"),
+        "mass_per_length": Key("mass_per_length", "mass (or weight) per length of the path's "
+                               "beam (or one per span, equal)", "mass_per_length"),
+        "first_frequency": Key("frequency", "first natural frequency", "bridge_frequency"),
+        "damping_ratio": Key("ratio", "fraction of critical damping", "bridge_damping_ratio",
+                             0.01),
+        "modes": Key("int", "modes of the modal model (default: every mode up to 2.3 times "
+                     "the highest simply supported frequency of a span)", "modes"),
     },
     "vehicle": {
-        "mass": Key("mass", "sprung mass (or weight) of the truck", 1000.0, 100_000.0),
-        "frequency": Key("frequency", "body-bounce frequency", 0.5, 20.0),
-        "damping_ratio": Key("ratio", "fraction of critical damping", 0.02, 0.5, 0.10),
+        "type": Key("choice", "sprung-mass, quarter-car, hs20, hl93-truck, hl93-tandem or axles",
+                    default="sprung-mass", choices=VEHICLE_TYPES),
+        "mass": Key("mass", "sprung mass (or weight) of the truck", "truck_mass"),
+        "unsprung_mass": Key("mass", "unsprung (axle) mass of a quarter car", "unsprung_mass"),
+        "frequency": Key("frequency", "body-bounce frequency (trucks: 3 Hz)",
+                         "vehicle_frequency"),
+        "tyre_stiffness": Key("stiffness", "tyre stiffness of a quarter car (all its tyres)"),
+        "damping_ratio": Key("ratio", "fraction of critical damping of the suspension",
+                             "vehicle_damping_ratio", 0.10),
         "damped": Key("bool", "true when frequency is the damped frequency", default=False),
+        "footprint": Key("length", "tyre contact length (default 0.25 m)", "footprint"),
+        "rear_axle_spacing": Key("spacing", "rear axle spacing of the design truck, 14 to 30 "
+                                 "ft, or [low, high] to find the governing one",
+                                 default=("14 ft", "30 ft")),
+        "tyres": Key("bool", "trucks: each axle on an unsprung mass and tyres", default=True),
+        "body": Key("choice", "trucks: independent axles, or one rigid body",
+                    default="independent", choices=("independent", "rigid")),
+        "loads": Key("weights", "axle loads front to rear, a YAML list", "vehicle_weight"),
+        "spacings": Key("lengths", "distance from each axle to the next, a YAML list",
+                        "axle_offset"),
     },
     "profile": {
         "file": Key("path", "deck profile: two columns, station and elevation"),
         "length_unit": Key("length_unit", "unit of the file's stations (inch, ft, m, mm)"),
         "elevation_unit": Key("length_unit", "unit of the file's elevations if different"),
-        "bridge_start": Key(
-            "length", "station of the first support from the file's first point", 0.0, 10_000.0
-        ),
-        "approach": Key(
-            "choice",
-            "road before the bridge: flat, or an ISO 8608 road (fitted to the deck)",
-            choices=("flat", "iso8608"),
-        ),
-        "approach_length": Key("length", "length of the approach", 5.0, 3000.0),
-        "iso_class": Key("choice", "ISO 8608 class of a generated road", choices=tuple("ABCDEFGH")),
-        "seed": Key("int", "seed of a generated road's random phases", 0, 2**32 - 1, 1),
-        "spacing": Key("length", "sample spacing of a generated road", 0.005, 0.1),
+        "bridge_start": Key("length", "station of the first support from the file's first "
+                            "point (0 or more)"),
+        "approach": Key("choice", "road before the bridge: flat, or an ISO 8608 road (fitted "
+                        "to the deck)", choices=("flat", "iso8608")),
+        "approach_length": Key("length", "length of the approach", "profile_length"),
+        "iso_class": Key("choice", "ISO 8608 class of a generated road",
+                         choices=tuple("ABCDEFGH")),
+        "seed": Key("int", "seed of a generated road's random phases", default=1),
+        "spacing": Key("length", "sample spacing of a generated road", "spacing"),
     },
-    "speeds": Key("speeds", "truck speeds, a YAML list", 1 * u.kph, 150 * u.kph),
+    "speeds": Key("speeds", "vehicle speeds, a YAML list", "speed"),
+    "sections": Key("lengths", "stations from the first support (default: the midspans and "
+                    "the interior supports)"),
+    "effects": Key("effects", "any of displacement, moment, shear (default: all three)",
+                   choices=EFFECTS),
+    "direction": Key("choice", "forward (from the first support), backward or both",
+                     default="both", choices=DIRECTIONS),
     "quick": Key("bool", "fewer points in the sweeps (for tests)", default=False),
     "units": Key("choice", "units shown first (the other alongside)", choices=("US", "SI")),
-}
+}  # fmt: skip
 
-#: Most speeds a report runs.
-MAX_SPEEDS = 20
+#: Most speeds, sections and axles a report takes; longest title.
+MAX_SPEEDS, MAX_SECTIONS, MAX_AXLES, MAX_TITLE = 20, 30, 20, 200
+#: Seeds of a generated road.
+SEED_RANGE = (0, 2**32 - 1)
 
 _BRIDGE_ROUTES = (
     ("k_mid", "first_frequency"),
@@ -127,7 +200,11 @@ _BRIDGE_ROUTES = (
 
 @dataclass(frozen=True)
 class BridgeParameters:
-    """The bridge's parameters in SI (``None`` where not given)."""
+    """The bridge's parameters in SI (``None`` where not given).
+
+    ``spans`` are the span lengths (``n_spans`` times ``span`` when given so); ``span`` is
+    the longest.
+    """
 
     span: float
     n_spans: int
@@ -136,16 +213,36 @@ class BridgeParameters:
     EI: float | None = None
     mass_per_length: float | None = None
     first_frequency: float | None = None
+    spans: tuple[float, ...] = ()
+    modes: int | None = None
+
+    @property
+    def study_layout(self) -> bool:
+        """One span, or two equal spans: the study's beam."""
+        return len(self.spans) == 1 or (len(self.spans) == 2 and self.spans[0] == self.spans[1])
 
 
 @dataclass(frozen=True)
 class VehicleParameters:
-    """The truck's parameters in SI."""
+    """The vehicle's parameters in SI (``None`` where not given or not of its type).
 
-    mass: float
-    frequency: float
+    ``rear_axle_spacing`` is ``(low, high)``: one spacing when equal, else the range in
+    which the report finds the governing one.
+    """
+
+    mass: float | None
+    frequency: float | None
     damping_ratio: float
     damped: bool
+    type: str = "sprung-mass"
+    unsprung_mass: float | None = None
+    tyre_stiffness: float | None = None
+    footprint: float | None = None
+    rear_axle_spacing: tuple[float, float] | None = None
+    tyres: bool = True
+    body: str = "independent"
+    loads: tuple[float, ...] = ()
+    spacings: tuple[float, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -161,6 +258,9 @@ class ProfileParameters:
     iso_class: str
     seed: int
     spacing: float
+    #: The units as written (``"inch"``), for messages naming a likely slip.
+    length_unit_name: str | None = None
+    elevation_unit_name: str | None = None
 
 
 @dataclass(frozen=True)
@@ -174,7 +274,7 @@ class ReportParameters:
     bridge, vehicle, profile
         The sections, in SI.
     speeds
-        Truck speeds [m/s].
+        Vehicle speeds [m/s].
     quick
         Fewer points in the sweeps.
     units
@@ -183,6 +283,13 @@ class ReportParameters:
         Each quantity as written, by key (``{"bridge.span": "140 ft"}``), for the inputs table.
     raw
         The parameters as given (plain YAML types), for the provenance section.
+    sections
+        Stations from the first support [m], sorted; ``None`` for the default (the midspans
+        and the interior supports).
+    effects
+        The effects reported, in the order of :data:`vbi_lib.beam_statics.EFFECTS`.
+    direction
+        ``"forward"``, ``"backward"`` or ``"both"``.
     """
 
     title: str
@@ -194,6 +301,9 @@ class ReportParameters:
     units: str
     given: dict[str, str] = field(repr=False)
     raw: dict[str, Any] = field(repr=False)
+    sections: tuple[float, ...] | None = None
+    effects: tuple[str, ...] = EFFECTS
+    direction: str = "both"
 
 
 # ---------------------------------------------------------------------------- checks of one value
@@ -209,20 +319,33 @@ def _suggest(key: str, allowed: list[str]) -> str:
 
 
 #: Unit a range is shown in, by kind (SI, or a decimal multiple of it).
-_RANGE_UNIT = {"speed": "km/h", "mass": "t", "stiffness": "kN/m", "mass_per_length": "kg/m"}
+_RANGE_UNIT = {
+    "speed": "km/h",
+    "mass": "t",
+    "stiffness": "kN/m",
+    "mass_per_length": "kg/m",
+    "force": "kN",
+}
 
 
-def _range_text(key: Key, unit: str) -> str:
+def _range_text(key: Key, unit: str, kind: str | None = None) -> str:
     """``"3 to 300 m (9.84 to 984 ft)"``: the key's range, in SI and in the unit given."""
     ureg = u.registry()
-    si_unit = u.si_unit(key.kind)
-    shown = _RANGE_UNIT.get(key.kind, si_unit)
-    low, high = (ureg.Quantity(v, si_unit).to(shown).magnitude for v in (key.low, key.high))
+    kind = kind or key.kind
+    si_unit = u.si_unit(kind)
+    shown = _RANGE_UNIT.get(kind, si_unit)
+    bounds = key.bounds
+    if math.isinf(bounds[1]):
+        return f"above {_g(ureg.Quantity(bounds[0], si_unit).to(shown).magnitude)} {shown}"
+    low, high = (ureg.Quantity(v, si_unit).to(shown).magnitude for v in bounds)
     text = f"{_g(low)} to {_g(high)} {shown}"
     try:
-        low, high = (ureg.Quantity(v, si_unit).to(unit).magnitude for v in (key.low, key.high))
-    except Exception:  # a weight for a mass, or the same unit: SI alone
-        return text
+        low, high = (ureg.Quantity(v, si_unit).to(unit).magnitude for v in bounds)
+    except Exception:  # another dimension: a mass given as a weight, or no alongside
+        try:
+            low, high = (ureg.Quantity(v * u.g, "N").to(unit).magnitude for v in bounds)
+        except Exception:
+            return text
     if ureg.parse_units(unit) != ureg.parse_units(shown):
         text += f" ({_g(low)} to {_g(high)} {unit})"
     return text
@@ -230,15 +353,58 @@ def _range_text(key: Key, unit: str) -> str:
 
 def _g(value: float) -> str:
     """Three significant digits, thousands separated: ``3,000``, ``0.621``, ``1e+11``."""
+    if value == 0:
+        return "0"
     if 1e-3 <= abs(value) < 1e6:
         return f"{float(f'{value:.3g}'):,g}"
     return f"{value:.3g}"
+
+
+def _inside(key: Key, si: float) -> bool:
+    low, high = key.bounds
+    above = si > low if key.open_low else si >= low
+    return above and si <= high
+
+
+def _outside(key: Key, unit: str, kind: str | None = None) -> str:
+    spec = RANGES[key.range]
+    what = "intended" if spec.soft else "allowed"
+    return (
+        f"is outside the {what} range {_range_text(key, unit, kind)} of {spec.quantity} "
+        f"(vbi_lib.ranges.RANGES[{key.range!r}])"
+    )
+
+
+#: Units of one dimension that are confused for one another (the same number in another).
+_SLIP_UNITS = {
+    "force": ("kip", "kN", "lbf", "N", "MN"),
+    "mass": ("t", "kg", "slinch", "slug", "lb"),
+}
+
+
+def _likely_slip(number: str, unit: str, kind: str, key: Key) -> str:
+    """``" did you mean '77.2 kip' (35 t)?"`` when the same number in another unit of the
+    same dimension lands in the key's range; else empty."""
+    ureg = u.registry()
+    found = []
+    for other in _SLIP_UNITS.get(kind, ()):
+        try:
+            if ureg.parse_units(other) == ureg.parse_units(unit):
+                continue
+            si = ureg.Quantity(float(number), other).to(u.si_unit(kind)).magnitude
+        except Exception:  # pint cannot convert it: no suggestion
+            continue
+        mass = si / u.g if kind == "force" else si
+        if _inside(key, mass):
+            found.append(f"'{number} {other}' ({_g(mass / 1000)} t)")
+    return f"; did you mean {' or '.join(found[:2])}?" if found else ""
 
 
 def _quantity(name: str, key: Key, value: object, given: dict[str, str]) -> float:
     """A quantity of ``key.kind`` within the key's range; a mass may be given as a weight."""
     kinds = {"mass": ("mass", "force"), "mass_per_length": ("mass_per_length", "force_per_length")}
     kind, weight_kind = kinds.get(key.kind, (key.kind, None))
+    read_kind = kind
     try:
         reading = u.read_quantity(value, kind, name=name)
         si = reading.si
@@ -254,10 +420,15 @@ def _quantity(name: str, key: Key, value: object, given: dict[str, str]) -> floa
                 name, value, f"must be {what} or a weight, e.g. {example} or '77.2 kip'"
             ) from None
         si = reading.si / u.g
-    if not key.low <= si <= key.high:
-        raise ParameterError(
-            name, value, f"is outside the plausible range {_range_text(key, reading.unit)}"
-        )
+        read_kind = weight_kind
+    if key.range is None and si < 0:
+        raise ParameterError(name, value, "must not be negative")
+    if key.range is not None and not _inside(key, si):
+        rule = _outside(key, reading.unit, kind)
+        if key.kind == "mass":
+            lead = f"is a weight of {_g(si / 1000)} t, which " if read_kind == "force" else ""
+            rule = lead + rule + _likely_slip(reading.number, reading.unit, read_kind, key)
+        raise ParameterError(name, value, rule)
     given[name] = reading.text
     return si
 
@@ -272,22 +443,25 @@ def _ratio(name: str, key: Key, value: object, given: dict[str, str]) -> float:
         number = float(value)
     else:
         raise ParameterError(name, value, "must be a number such as 0.05, or text such as '5 %'")
-    if not (math.isfinite(number) and key.low <= number <= key.high):
+    low, high = key.bounds
+    if not (math.isfinite(number) and low <= number <= high):
         raise ParameterError(
-            name, value, f"is outside the plausible range {key.low:g} to {key.high:g} "
-            f"({key.low:.0%} to {key.high:.0%} of critical damping)"
+            name, value, f"is outside the intended range {low:g} to {high:g} ({low:.0%} to "
+            f"{high:.0%} of critical damping; vbi_lib.ranges.RANGES[{key.range!r}])"
         )  # fmt: skip
     given[name] = f"{number:g} ({number * 100:g} %)"
     return number
 
 
 def _integer(name: str, key: Key, value: object) -> int:
+    low, high = RANGES[key.range].hard if key.range else SEED_RANGE
     if isinstance(value, bool) or not isinstance(value, int):
         raise ParameterError(
-            name, value, f"must be a whole number from {key.low:g} to {key.high:g} (unquoted)"
+            name, value, f"must be a whole number from {low:g} to {high:g} (unquoted)"
         )
-    if not key.low <= value <= key.high:
-        raise ParameterError(name, value, f"is outside {key.low:g} to {key.high:g}")
+    if not low <= value <= high:
+        source = f" (vbi_lib.ranges.RANGES[{key.range!r}])" if key.range else ""
+        raise ParameterError(name, value, f"is outside {low:g} to {high:g}{source}")
     return int(value)
 
 
@@ -303,19 +477,19 @@ def _choice(name: str, key: Key, value: object) -> str:
     return value.strip()
 
 
-def _text(name: str, key: Key, value: object) -> str:
+def _text(name: str, value: object) -> str:
     if not isinstance(value, str) or not value.strip():
         raise ParameterError(name, value, "must be text")
-    if len(value) > key.high:
-        raise ParameterError(name, value, f"is longer than {key.high:g} characters")
+    if len(value) > MAX_TITLE:
+        raise ParameterError(name, value, f"is longer than {MAX_TITLE} characters")
     return " ".join(value.split())
 
 
-def _length_unit(name: str, value: object) -> float:
+def _length_unit(name: str, value: object) -> tuple[float, str]:
     if not isinstance(value, str) or not value.strip() or any(c.isdigit() for c in value):
         raise ParameterError(name, value, "must be the name of a length unit: inch, ft, m, mm")
     try:
-        return u.read_quantity(f"1 {value.strip()}", "length", name=name).si
+        return u.read_quantity(f"1 {value.strip()}", "length", name=name).si, value.strip()
     except ValueError:
         raise ParameterError(
             name, value, "is not a length unit pint knows; use e.g. inch, ft, m or mm"
@@ -337,6 +511,15 @@ def _path(name: str, value: object, base_dir: Path) -> Path:
     return path.resolve()
 
 
+def _list(name: str, value: object, low: int, high: int, example: str) -> list:
+    if not isinstance(value, list | tuple):
+        raise ParameterError(name, value, f"must be a YAML list, e.g. {example}")
+    if not low <= len(value) <= high:
+        count = f"{low}" if low == high else f"{low} to {high}"
+        raise ParameterError(name, value, f"must list {count} values, e.g. {example}")
+    return list(value)
+
+
 def _speeds(name: str, key: Key, value: object, given: dict[str, str]) -> tuple[float, ...]:
     if not isinstance(value, list | tuple):
         raise ParameterError(
@@ -352,6 +535,57 @@ def _speeds(name: str, key: Key, value: object, given: dict[str, str]) -> tuple[
             raise ParameterError(f"{name}[{i}]", item, "repeats an earlier speed")
         speeds.append(speed)
     return tuple(speeds)
+
+
+def _lengths(name: str, key: Key, value: object, given: dict[str, str], high: int) -> tuple:
+    items = _list(name, value, 1, high, "[90 ft, 120 ft]")
+    item_key = replace(key, kind="length")
+    return tuple(_quantity(f"{name}[{i}]", item_key, v, given) for i, v in enumerate(items))
+
+
+def _weights(name: str, key: Key, value: object, given: dict[str, str]) -> tuple:
+    items = _list(name, value, 1, MAX_AXLES, "[12 kip, 34 kip, 34 kip]")
+    item_key = replace(key, kind="force")
+    return tuple(_quantity(f"{name}[{i}]", item_key, v, given) for i, v in enumerate(items))
+
+
+def _spacing(name: str, value: object, given: dict[str, str]) -> tuple[float, float]:
+    """One rear spacing (``14 ft``) or a range (``[14 ft, 30 ft]``), within 14 to 30 ft."""
+    from ..vehicles.fleet import REAR_SPACING_RANGE
+
+    items = value if isinstance(value, list | tuple) else [value]
+    if not 1 <= len(items) <= 2:
+        raise ParameterError(
+            name, value, "must be one length (14 ft) or a YAML list of two, the range in "
+            "which the governing spacing is found ([14 ft, 30 ft])"
+        )  # fmt: skip
+    low, high = REAR_SPACING_RANGE
+    out = []
+    for i, item in enumerate(items):
+        label = f"{name}[{i}]" if len(items) > 1 else name
+        try:
+            reading = u.read_quantity(item, "length", name=label)
+        except ValueError as error:
+            raise ParameterError(label, item, "", message=str(error)) from None
+        if not low - 1e-9 <= reading.si <= high + 1e-9:
+            raise ParameterError(
+                label, item, "is outside AASHTO's 14 to 30 ft (4.27 to 9.14 m; LRFD 3.6.1.2.2)"
+            )
+        given[label] = reading.text
+        out.append(min(max(reading.si, low), high))
+    if len(out) == 2 and out[1] < out[0]:
+        raise ParameterError(name, value, "must list the shorter spacing first")
+    return (out[0], out[-1])
+
+
+def _effects(name: str, key: Key, value: object) -> tuple[str, ...]:
+    items = _list(name, value, 1, len(EFFECTS), "[moment, shear]")
+    for i, item in enumerate(items):
+        if item not in key.choices:
+            raise ParameterError(f"{name}[{i}]", item, f"must be one of {', '.join(EFFECTS)}")
+    if len(set(items)) != len(items):
+        raise ParameterError(name, value, "names an effect twice")
+    return tuple(effect for effect in EFFECTS if effect in items)
 
 
 # ---------------------------------------------------------------------------- sections
@@ -373,24 +607,35 @@ def _value(section: str, name: str, values: dict, schema: dict[str, Key], **cont
     if value is _MISSING:
         if key.default is _MISSING:
             return None
+        if key.kind == "spacing":
+            return _spacing(full, key.default, {})
         return key.default
     given = context.get("given", {})
-    if key.kind in ("int",):
-        return _integer(full, key, value)
-    if key.kind == "bool":
-        return _boolean(full, value)
-    if key.kind == "choice":
-        return _choice(full, key, value)
-    if key.kind == "text":
-        return _text(full, key, value)
-    if key.kind == "ratio":
-        return _ratio(full, key, value, given)
-    if key.kind == "length_unit":
-        return _length_unit(full, value)
-    if key.kind == "path":
-        return _path(full, value, context["base_dir"])
-    if key.kind == "speeds":
-        return _speeds(full, key, value, given)
+    readers = {
+        "int": lambda: _integer(full, key, value),
+        "bool": lambda: _boolean(full, value),
+        "choice": lambda: _choice(full, key, value),
+        "text": lambda: _text(full, value),
+        "ratio": lambda: _ratio(full, key, value, given),
+        "length_unit": lambda: _length_unit(full, value),
+        "path": lambda: _path(full, value, context["base_dir"]),
+        "speeds": lambda: _speeds(full, key, value, given),
+        "lengths": lambda: _lengths(full, key, value, given, context.get("most", MAX_AXLES)),
+        "weights": lambda: _weights(full, key, value, given),
+        "spacing": lambda: _spacing(full, value, given),
+        "effects": lambda: _effects(full, key, value),
+    }
+    if key.kind in readers:
+        return readers[key.kind]()
+    if key.range is None and key.kind in ("stiffness",):  # no range of its own: > 0
+        try:
+            reading = u.read_quantity(value, key.kind, name=full)
+        except ValueError as error:
+            raise ParameterError(full, value, "", message=str(error)) from None
+        if reading.si <= 0:
+            raise ParameterError(full, value, "must be greater than zero")
+        given[full] = reading.text
+        return reading.si
     return _quantity(full, key, value, given)
 
 
@@ -399,10 +644,50 @@ def _required(name: str, value: object, example: str) -> None:
         raise ParameterError(name, _MISSING, f"is required, e.g. {example}")
 
 
+def _per_span(name: str, values: dict, key: Key, given: dict[str, str], count: int) -> Any:
+    """``EI`` or ``mass_per_length``: one value, or a YAML list of one per span (equal)."""
+    value = values.get(name, _MISSING)
+    if not isinstance(value, list | tuple):
+        return _value("bridge", name, values, SCHEMA["bridge"], given=given)
+    items = _list(f"bridge.{name}", value, count, count, f"one per span ({count})")
+    read = [_quantity(f"bridge.{name}[{i}]", key, v, given) for i, v in enumerate(items)]
+    if any(not math.isclose(v, read[0], rel_tol=1e-9) for v in read):
+        raise ParameterError(
+            f"bridge.{name}", value, "differs from span to span; the report's beam is uniform "
+            "(one EI and one mass per length over every span): give one value, or model the "
+            "bridge with the library's Bridge.continuous"
+        )  # fmt: skip
+    given[f"bridge.{name}"] = ", ".join(given.pop(f"bridge.{name}[{i}]") for i in range(count))
+    return read[0]
+
+
 def _bridge(values: dict, given: dict[str, str]) -> BridgeParameters:
     schema = SCHEMA["bridge"]
-    read = {name: _value("bridge", name, values, schema, given=given) for name in schema}
-    _required("bridge.span", read["span"], "span: 140 ft")
+    if "span" in values and "spans" in values:
+        raise ParameterError(
+            "bridge.spans", values["spans"], "and bridge.span are both given; give spans (a "
+            "list of span lengths) or span and n_spans (equal spans)"
+        )  # fmt: skip
+    if "spans" in values and "n_spans" in values:
+        raise ParameterError(
+            "bridge.n_spans", values["n_spans"], "applies to bridge.span; with spans the "
+            "number of spans is the length of the list"
+        )  # fmt: skip
+    if "spans" in values:
+        most = int(RANGES["n_spans"].hard[1])
+        spans = _value("bridge", "spans", values, schema, given=given, most=most)
+    else:
+        span = _value("bridge", "span", values, schema, given=given)
+        _required("bridge.span", span, "span: 140 ft (or spans: [90 ft, 120 ft, 90 ft])")
+        n_spans = _value("bridge", "n_spans", values, schema)
+        spans = (span,) * n_spans
+    count = len(spans)
+    read = {
+        name: _value("bridge", name, values, schema, given=given)
+        for name in ("k_mid", "first_frequency", "damping_ratio", "modes")
+    }
+    for name in ("EI", "mass_per_length"):
+        read[name] = _per_span(name, values, schema[name], given, count)
     stiffness = [k for k in ("k_mid", "EI", "mass_per_length", "first_frequency") if k in values]
     if sorted(stiffness) not in [sorted(route) for route in _BRIDGE_ROUTES]:
         routes = "; or ".join(" and ".join(route) for route in _BRIDGE_ROUTES)
@@ -410,15 +695,99 @@ def _bridge(values: dict, given: dict[str, str]) -> BridgeParameters:
         raise ParameterError(
             "bridge", {k: values[k] for k in stiffness}, f"needs exactly {routes}; got {got}"
         )
-    return BridgeParameters(**read)
+    result = BridgeParameters(
+        span=max(spans), n_spans=count, spans=tuple(spans), **read
+    )  # fmt: skip
+    if read["k_mid"] is not None and not result.study_layout:
+        raise ParameterError(
+            "bridge.k_mid", values["k_mid"], "is the study's route for one span or two equal "
+            f"spans (equations 82-84); for {count} spans give EI and mass_per_length, or "
+            "mass_per_length and first_frequency"
+        )  # fmt: skip
+    return result
 
 
 def _vehicle(values: dict, given: dict[str, str]) -> VehicleParameters:
     schema = SCHEMA["vehicle"]
-    read = {name: _value("vehicle", name, values, schema, given=given) for name in schema}
-    _required("vehicle.mass", read["mass"], "mass: 35 t (or a weight, 77.2 kip)")
-    _required("vehicle.frequency", read["frequency"], "frequency: 2.5 Hz")
-    return VehicleParameters(**read)
+    kind = _value("vehicle", "type", values, schema)
+    allowed = VEHICLE_KEYS[kind]
+    for name in values:
+        if name != "type" and name not in allowed:
+            others = [t for t, keys in VEHICLE_KEYS.items() if name in keys]
+            raise ParameterError(
+                f"vehicle.{name}", values[name], f"does not apply to vehicle.type {kind}; it "
+                f"belongs to {', '.join(others)}. {kind} takes: {', '.join(allowed)}"
+            )  # fmt: skip
+    read = {name: _value("vehicle", name, values, schema, given=given) for name in allowed}
+    if kind in ("sprung-mass", "quarter-car"):
+        _required("vehicle.mass", read["mass"], "mass: 35 t (or a weight, 77.2 kip)")
+        _required("vehicle.frequency", read["frequency"], "frequency: 2.5 Hz")
+    if kind == "quarter-car":
+        _required("vehicle.unsprung_mass", read["unsprung_mass"], "unsprung_mass: 3 t")
+        _required("vehicle.tyre_stiffness", read["tyre_stiffness"], "tyre_stiffness: 10 MN/m")
+    if kind == "axles":
+        _required("vehicle.loads", read["loads"], "loads: [12 kip, 34 kip, 34 kip]")
+        needed = len(read["loads"]) - 1
+        spacings = read["spacings"] or ()
+        if len(spacings) != needed:
+            raise ParameterError(
+                "vehicle.spacings", values.get("spacings", _MISSING), f"must list {needed} "
+                f"distances, one from each axle to the next (vehicle.loads has "
+                f"{len(read['loads'])} axles)"
+            )  # fmt: skip
+        total = sum(spacings)
+        hard = RANGES["axle_offset"].hard[1]
+        if total > hard:
+            raise ParameterError(
+                "vehicle.spacings", values["spacings"], f"add up to {total:.1f} m from the "
+                f"first axle to the last, more than the {hard:g} m of any vehicle"
+            )  # fmt: skip
+        _truck_weight("vehicle.loads", values["loads"], sum(read["loads"]))
+        read["spacings"] = tuple(spacings)
+    if kind in ("hs20", "hl93-truck", "hl93-tandem", "axles") and read.get("frequency") is None:
+        read["frequency"] = 3.0
+    return VehicleParameters(
+        type=kind,
+        mass=read.get("mass"),
+        frequency=read.get("frequency"),
+        damping_ratio=read["damping_ratio"],
+        damped=bool(read.get("damped", False)),
+        unsprung_mass=read.get("unsprung_mass"),
+        tyre_stiffness=read.get("tyre_stiffness"),
+        footprint=read.get("footprint"),
+        rear_axle_spacing=read.get("rear_axle_spacing"),
+        tyres=read.get("tyres", True),
+        body=read.get("body") or "independent",
+        loads=tuple(read.get("loads") or ()),
+        spacings=tuple(read.get("spacings") or ()),
+    )
+
+
+def _truck_weight(name: str, value: object, weight: float) -> None:
+    """A vehicle's weight whose mass lies outside a truck's range names the likely slip."""
+    key = Key("mass", "", "truck_mass")
+    mass = weight / u.g
+    if _inside(key, mass):
+        return
+    slip = ""
+    if isinstance(value, list) and value and all(isinstance(v, str) for v in value):
+        units = {u.read_quantity(v, "force").unit for v in value}
+        if len(units) == 1:
+            unit = units.pop()
+            for other in _SLIP_UNITS["force"]:
+                try:
+                    factor = u.registry().Quantity(1.0, other).to(unit).magnitude
+                except Exception:  # pint cannot convert it: no suggestion
+                    continue
+                if factor != 1.0 and _inside(key, mass * factor):
+                    slip = (
+                        f"; in {other} instead of {unit} it would weigh {_g(mass * factor / 1e3)} t"
+                    )
+                    break
+    raise ParameterError(
+        name, value, f"weigh {_g(mass / 1000)} t in all, outside the intended range "
+        f"{_range_text(key, 't')} of a truck's mass (vbi_lib.ranges.RANGES['truck_mass']){slip}"
+    )  # fmt: skip
 
 
 def _profile(values: dict, given: dict[str, str], base_dir: Path) -> ProfileParameters:
@@ -445,25 +814,30 @@ def _profile(values: dict, given: dict[str, str], base_dir: Path) -> ProfilePara
         raise ParameterError(
             "profile.length_unit", _MISSING, "is required with profile.file, e.g. length_unit: inch"
         )
+    length_unit, length_name = read["length_unit"] or (None, None)
+    elevation_unit, elevation_name = read["elevation_unit"] or (length_unit, None)
     return ProfileParameters(
         file=read["file"],
-        length_unit=read["length_unit"],
-        elevation_unit=read["elevation_unit"] or read["length_unit"],
+        length_unit=length_unit,
+        elevation_unit=elevation_unit,
         bridge_start=read["bridge_start"] or 0.0,
         approach=read["approach"] or ("flat" if has_file else "iso8608"),
         approach_length=read["approach_length"],
         iso_class=read["iso_class"] or "C",
         seed=read["seed"],
         spacing=read["spacing"] or 0.025,
+        length_unit_name=length_name,
+        elevation_unit_name=elevation_name,
     )
 
 
 def _units(values: dict) -> str:
-    """``"US"`` when the span is written in US customary units, else ``"SI"``."""
-    span = values.get("bridge", {}).get("span")
+    """``"US"`` when the span (or the first of the spans) is in US customary units, else SI."""
+    bridge = values.get("bridge", {})
+    span = bridge.get("span") if "span" in bridge else (bridge.get("spans") or [None])[0]
     try:
         unit = u.read_quantity(span, "length").unit
-    except ValueError:
+    except (ValueError, TypeError):
         return "SI"
     names = set(re.findall(r"[A-Za-z_]+", str(u.registry().parse_units(unit))))
     return "US" if names & US_UNITS else "SI"
@@ -476,7 +850,8 @@ def read_parameters(values: Mapping[str, Any], base_dir: str | Path = ".") -> Re
     ----------
     values
         The parameters, as YAML gives them: ``title``, ``bridge``, ``vehicle``, ``profile``,
-        ``speeds``, ``quick``, ``units`` (see :data:`SCHEMA`).
+        ``speeds``, ``sections``, ``effects``, ``direction``, ``quick``, ``units`` (see
+        :data:`SCHEMA`).
     base_dir
         Folder a relative ``profile.file`` is read from (the parameter file's folder).
 
@@ -501,13 +876,24 @@ def read_parameters(values: Mapping[str, Any], base_dir: str | Path = ".") -> Re
     Traceback (most recent call last):
     ...
     vbi_lib.reports.parameters.ParameterError: bridge.spam='140 ft' is not a known key; \
-did you mean 'span'? allowed: span, n_spans, k_mid, EI, mass_per_length, first_frequency, \
-damping_ratio
+did you mean 'span'? allowed: span, spans, n_spans, k_mid, EI, mass_per_length, \
+first_frequency, damping_ratio, modes
+
+    A truck's weight in kN where kip was meant:
+
+    >>> read_parameters({  # doctest: +ELLIPSIS
+    ...     "bridge": {"span": "140 ft", "k_mid": "222278 lbf/in", "first_frequency": "2.08 Hz"},
+    ...     "vehicle": {"mass": "77.2 kN", "frequency": "2.5 Hz"}, "speeds": ["30 mph"]})
+    Traceback (most recent call last):
+    ...
+    vbi_lib.reports.parameters.ParameterError: vehicle.mass='77.2 kN' is a weight of 7.87 t, \
+which is outside the intended range 9 to 200 t ... did you mean '77.2 kip' (35 t)?
     """
     if not isinstance(values, Mapping):
         raise ParameterError(
-            "", values, f"parameters must be a mapping of {', '.join(SCHEMA)}; got {values!r}"
-        )
+            "", values, f"parameters must be a mapping of {', '.join(SCHEMA)}; got "
+            f"{_short(values)}"
+        )  # fmt: skip
     for name in values:
         if name not in SCHEMA:
             raise ParameterError(str(name), values[name], _suggest(str(name), list(SCHEMA)))
@@ -523,39 +909,61 @@ damping_ratio
         raise ParameterError("vehicle", _MISSING, "is required, e.g. vehicle: {mass: 35 t, ...}")
     vehicle = _vehicle(sections["vehicle"], given)
     profile = _profile(sections["profile"], given, Path(base_dir))
-    speeds = _value("", "speeds", dict(values), SCHEMA, given=given)
+    top = dict(values)
+    speeds = _value("", "speeds", top, SCHEMA, given=given)
     _required("speeds", speeds, "speeds: [30 mph, 45 mph]")
-    units = _value("", "units", dict(values), SCHEMA) or _units(dict(values))
+    stations = None
+    if "sections" in top:
+        stations = _value("", "sections", top, SCHEMA, given=given, most=MAX_SECTIONS)
+        length = math.fsum(bridge.spans)
+        for i, x in enumerate(stations):
+            if x > length * (1 + 1e-12):
+                raise ParameterError(
+                    f"sections[{i}]", top["sections"][i], f"lies beyond the bridge's far "
+                    f"support, {length:.3f} m ({length / u.ft:.2f} ft) from the first"
+                )  # fmt: skip
+        if len(set(stations)) != len(stations):
+            raise ParameterError("sections", top["sections"], "names a station twice")
+        stations = tuple(sorted(min(x, length) for x in stations))
+    effects = _value("", "effects", top, SCHEMA) or EFFECTS
+    units = _value("", "units", top, SCHEMA) or _units(top)
     return ReportParameters(
-        title=_value("", "title", dict(values), SCHEMA),
+        title=_value("", "title", top, SCHEMA),
         bridge=bridge,
         vehicle=vehicle,
         profile=profile,
         speeds=speeds,
-        quick=_value("", "quick", dict(values), SCHEMA),
+        quick=_value("", "quick", top, SCHEMA),
         units=units,
         given=given,
-        raw=dict(values),
+        raw=top,
+        sections=stations,
+        effects=effects,
+        direction=_value("", "direction", top, SCHEMA),
     )
 
 
 #: Names IPython itself puts in a notebook's namespace.
 _IPYTHON_NAMES = {"In", "Out", "get_ipython", "exit", "quit", "open", "namespace"}
+#: Names the template takes besides the parameter file's keys (set by vbi-report).
+RUNNER_NAMES = ("source", "results_file")
 
 
 def notebook_parameters(namespace: Mapping[str, Any]) -> tuple[dict[str, Any], dict[str, Any]]:
     """The report parameters papermill put in a notebook's namespace, and the runner's ``source``.
 
-    The template's parameters cell sets every key of :data:`SCHEMA` to ``None`` (not given)
-    and ``source`` (what :mod:`vbi_lib.reports.running` knows of the parameter file) to
-    ``None``; papermill then assigns the parameter file's keys.  A name papermill assigned
-    that is not a key (a typo in the file) is refused here, as :func:`read_parameters`
-    refuses it when the file is read directly.
+    The template's parameters cell sets every key of :data:`SCHEMA` to ``None`` (not given),
+    ``source`` (what :mod:`vbi_lib.reports.running` knows of the parameter file) to ``None``
+    and ``results_file`` (where the results' JSON goes) to ``None``; papermill then assigns
+    the parameter file's keys.  A name papermill assigned that is not a key (a typo in the
+    file) is refused here, as :func:`read_parameters` refuses it when the file is read
+    directly.
 
     Returns
     -------
     values, source
-        The parameters given (``None`` left out) and the ``source`` mapping (empty if unset).
+        The parameters given (``None`` left out) and the ``source`` mapping (empty if unset;
+        ``results_file`` is added to it when given).
 
     Raises
     ------
@@ -563,7 +971,7 @@ def notebook_parameters(namespace: Mapping[str, Any]) -> tuple[dict[str, Any], d
         An unknown name, with a "did you mean".
     """
     for name, value in namespace.items():
-        if name.startswith("_") or name in _IPYTHON_NAMES or name == "source":
+        if name.startswith("_") or name in _IPYTHON_NAMES or name in RUNNER_NAMES:
             continue
         if name not in SCHEMA:
             raise ParameterError(name, value, _suggest(name, list(SCHEMA)))
@@ -571,4 +979,12 @@ def notebook_parameters(namespace: Mapping[str, Any]) -> tuple[dict[str, Any], d
     source = namespace.get("source") or {}
     if not isinstance(source, Mapping):
         raise ParameterError("source", source, "is set by vbi-report; leave it out")
-    return values, dict(source)
+    source = dict(source)
+    results = namespace.get("results_file")
+    if results is not None:
+        if not isinstance(results, str | Path) or not str(results).strip():
+            raise ParameterError(
+                "results_file", results, "must be the path of the JSON file of results"
+            )
+        source["results_file"] = str(results)
+    return values, source
