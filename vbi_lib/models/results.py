@@ -37,7 +37,9 @@ from .sections import (
     check_method,
     check_side,
     governing_faces,
+    section_histories,
     section_history,
+    snap_to_supports,
     static_counterpart,
 )
 
@@ -239,8 +241,8 @@ class Crossing(ContactFlags):
     def _section(
         self, x: float | np.ndarray, effect: str, method: str, side: str | tuple[str, ...] = "left"
     ) -> np.ndarray:
-        sections = _stations(x)
         modes, q = self.modal_history()
+        sections = snap_to_supports(modes.supports, _stations(x))
         loads, positions = self._axles()
         values = section_history(modes, q, loads, positions, sections, effect, method, side)
         return values[:, 0] if np.ndim(x) == 0 else values
@@ -287,7 +289,10 @@ class Crossing(ContactFlags):
         return self._section(x, "shear", method, check_side(side))
 
     def sections(
-        self, x: float | np.ndarray, method: str = "mode-acceleration", side: str = "governing"
+        self,
+        x: float | np.ndarray,
+        method: str = "mode-acceleration",
+        side: str | tuple[str, ...] = "governing",
     ) -> SectionResponse:
         """Displacement, moment and shear at sections, their extremes and DAFs.
 
@@ -307,7 +312,8 @@ class Crossing(ContactFlags):
             ``"mode-acceleration"`` (default) or ``"mode-displacement"``.
         side
             Face of the shear at a support: ``"governing"`` (default), ``"left"`` or
-            ``"right"``.
+            ``"right"``; or one of ``"left"`` and ``"right"`` for each station (a station
+            given twice with both gives both faces).
 
         Returns
         -------
@@ -319,16 +325,25 @@ class Crossing(ContactFlags):
             A station off the bridge, an unknown method or side.
         """
         method = check_method(method)
-        side = check_side(side, FACES)
-        sections = _stations(x)
-        modes, _ = self.modal_history()
+        modes, q = self.modal_history()
+        sections = snap_to_supports(modes.supports, _stations(x))
         system = as_system(self.vehicle)
         axles = (system.static_loads, system.offsets)
-        if side == "governing":
+        if isinstance(side, str) and check_side(side, FACES) == "governing":
             faces = governing_faces(modes, sections, *axles, method)
-        else:
+        elif isinstance(side, str):
             faces = (side,) * sections.size
+        else:
+            faces = tuple(check_side(s) for s in side)
+            if len(faces) != sections.size:
+                raise ValueError(
+                    f"side={side!r} must give one face for each of the {sections.size} stations"
+                )
         static = static_counterpart(modes, sections, *axles, method, faces)
+        loads, positions = self._axles()
+        displacement, moment, shear = section_histories(
+            modes, q, loads, positions, sections, method, faces
+        )
         plural = "s" if modes.count > 1 else ""
         notes = [
             f"section responses by the {method} method with {modes.count} mode{plural}; "
@@ -341,9 +356,9 @@ class Crossing(ContactFlags):
             sections=sections,
             time=self.time,
             position=self.position - self.bridge_start,
-            displacement=self._section(sections, "displacement", method),
-            moment=self._section(sections, "moment", method),
-            shear=self._section(sections, "shear", method, faces),
+            displacement=displacement,
+            moment=moment,
+            shear=shear,
             static=static,
             method=method,
             modes=modes.count,

@@ -50,7 +50,7 @@ static shear is the larger in size (:func:`governing_faces`) and names it
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -80,7 +80,9 @@ __all__ = [
     "METHODS",
     "SectionResponse",
     "governing_faces",
+    "section_histories",
     "section_history",
+    "snap_to_supports",
     "static_counterpart",
 ]
 
@@ -121,6 +123,17 @@ def _interior_support(modes: BeamModes, x: np.ndarray) -> np.ndarray:
     if inner.size == 0:
         return np.zeros(x.shape, dtype=bool)
     return np.abs(x[:, None] - inner[None, :]).min(axis=1) <= 1e-9 * modes.bridge.length
+
+
+def snap_to_supports(supports: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """``x`` with every station within 1e-9 of the bridge's length of a support moved onto it
+    (so that ``L - x`` of a support, or a station typed to a few digits, is that support)."""
+    supports = np.asarray(supports, dtype=float)
+    x = np.array(x, dtype=float)
+    near = np.abs(x[..., None] - supports) <= 1e-9 * supports[-1]
+    hit = near.any(axis=-1)
+    x[hit] = supports[np.argmax(near[hit], axis=-1)]
+    return x
 
 
 def _third_right(modes: BeamModes, x: np.ndarray) -> np.ndarray:
@@ -209,6 +222,47 @@ def section_history(
             exact[:, take] = (-statics.deflection, statics.moment, statics.shear)[e]
         values[on] += loads[on, i, None] * (exact - truncated)
     return values
+
+
+def section_histories(
+    modes: BeamModes,
+    q: np.ndarray,
+    loads: np.ndarray,
+    positions: np.ndarray,
+    sections: np.ndarray,
+    method: str = "mode-acceleration",
+    side: str | tuple[str, ...] = "left",
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Displacement, moment and shear histories at sections, each ``(n_time, n_s)``.
+
+    The same as :func:`section_history` for each effect, with the exact statics of each
+    axle position computed once for the three.
+    """
+    check_method(method)
+    sides = _sides(side, sections.size)
+    shapes = [_modal_shapes(modes, effect, sections, sides) for effect in EFFECTS]
+    values = [q @ r.T for r in shapes]
+    if method == "mode-displacement":
+        return tuple(values)
+    bridge = modes.bridge
+    length = bridge.length
+    groups = [(face, np.array([s == face for s in sides])) for face in sorted(set(sides))]
+    for i in range(loads.shape[1]):
+        on = (positions[:, i] >= 0.0) & (positions[:, i] <= length) & (loads[:, i] != 0.0)
+        if not on.any():
+            continue
+        a = positions[on, i]
+        static_q = -modes.shape(a) / modes.omega**2  # (n_on, N)
+        exact = [np.empty((a.size, sections.size)) for _ in EFFECTS]
+        for face, take in groups:
+            statics = continuous_statics(
+                sections[None, take], a[:, None], bridge.spans, bridge.EI, side=face
+            )
+            for e, part in enumerate((-statics.deflection, statics.moment, statics.shear)):
+                exact[e][:, take] = part
+        for e in range(len(EFFECTS)):
+            values[e][on] += loads[on, i, None] * (exact[e] - static_q @ shapes[e].T)
+    return tuple(values)
 
 
 def _modal_envelope(
@@ -358,19 +412,21 @@ class SectionResponse:
         """History of one effect at every section, ``(n_time, n_s)``."""
         return (self.displacement, self.moment, self.shear)[effect_index(effect)]
 
-    @property
-    def _stack(self) -> np.ndarray:
-        return np.stack([self.displacement, self.moment, self.shear])  # (3, n_t, n_s)
+    def _extremes(self, pick: str) -> np.ndarray:
+        histories = (self.displacement, self.moment, self.shear)
+        result = np.stack([getattr(h, pick)(axis=0) for h in histories])  # (3, n_s)
+        result.setflags(write=False)
+        return result
 
-    @property
+    @cached_property
     def maximum(self) -> np.ndarray:
-        """Largest value of each effect over the crossing, ``(3, n_s)``."""
-        return self._stack.max(axis=1)
+        """Largest value of each effect over the crossing, ``(3, n_s)`` (computed once)."""
+        return self._extremes("max")
 
-    @property
+    @cached_property
     def minimum(self) -> np.ndarray:
-        """Smallest value of each effect over the crossing, ``(3, n_s)``."""
-        return self._stack.min(axis=1)
+        """Smallest value of each effect over the crossing, ``(3, n_s)`` (computed once)."""
+        return self._extremes("min")
 
     @property
     def governing(self) -> np.ndarray:
