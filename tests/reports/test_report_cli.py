@@ -295,8 +295,14 @@ def test_papermill_runs_the_template_on_the_same_file(folder: Path) -> None:
         for cell in notebook["cells"]
         for output in cell.get("outputs", [])
     )
-    assert "A 30 m bridge" in html and "The tyre stayed on the road" in html
+    assert "A 30 m bridge" in html and "The vehicle stayed on the road" in html
     assert "parameters given directly" in html  # papermill does not pass the file's name
+    # with results_file, papermill writes the results as data too
+    command += ["-p", "results_file", str(folder / "run.json")]
+    done = subprocess.run(command, cwd=folder, env=env, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    rows = json.loads((folder / "run.json").read_text())["results"]
+    assert len(rows) == 2 * 3 * 2 and (folder / "run.csv").is_file()
 
 
 def test_the_flat_form_checks_its_output_file_before_running(folder: Path) -> None:
@@ -309,3 +315,16 @@ def test_the_flat_form_checks_its_output_file_before_running(folder: Path) -> No
     with pytest.raises(running.OutputError, match="must be an .html file"):
         legacy.make_report(folder / "report", **flat)
     assert list((folder / "tmp").iterdir()) == []
+
+
+def test_warnings_on_the_inputs_are_printed_after_the_paths(
+    folder: Path, capsys: pytest.CaptureFixture, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    out = folder / "out"
+    written = [running.ReportFiles(out / "deck.html", None, out / "deck.json", out / "deck.csv",
+                                   ("The deck profile's elevations fit ...",))]  # fmt: skip
+    monkeypatch.setattr(cli, "write_reports", lambda *args, **kwargs: written)
+    assert cli.main(["good.yaml", "-o", "out", "--no-pdf"]) == 0
+    captured = capsys.readouterr()
+    assert captured.out.splitlines() == [str(out / f"deck{s}") for s in (".html", ".json", ".csv")]
+    assert captured.err == "vbi-report: warning: deck: The deck profile's elevations fit ...\n"

@@ -430,8 +430,16 @@ class SectionResponse:
 
     @property
     def governing(self) -> np.ndarray:
-        """``+1`` where the static maximum is the larger in size, else ``-1``; ``(3, n_s)``."""
-        return np.where(self.static.maximum >= -self.static.minimum, 1, -1)
+        """``+1`` where the static maximum is the larger in size, else ``-1``; ``(3, n_s)``.
+
+        Where the two are equal to rounding (1e-9 of their size: the shear at midspan of a
+        symmetric span, ``+-P/2``), the sense whose dynamic extreme is the larger in size
+        governs, so that rounding never picks the smaller DAF.
+        """
+        high, low = self.static.maximum, -self.static.minimum
+        tie = np.abs(high - low) <= 1e-9 * np.maximum(np.abs(high), np.abs(low))
+        dynamic = np.where(self.maximum >= -self.minimum, 1, -1)
+        return np.where(tie, dynamic, np.where(high > low, 1, -1))
 
     def _ratio(self, dynamic: np.ndarray, static: np.ndarray) -> np.ndarray:
         scale = np.maximum(np.abs(self.static.maximum), np.abs(self.static.minimum))

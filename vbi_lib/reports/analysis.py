@@ -91,6 +91,17 @@ def _quiet(function, *args, **kwargs):  # noqa: ANN001, ANN002, ANN003, ANN202
     return result, [str(w.message) for w in caught if issubclass(w.category, VbiWarning)]
 
 
+def vehicle_label(vehicle: object) -> str:
+    """How the report names a vehicle: the design truck's own name, else what it is."""
+    from ..vehicles import QuarterCar, Vehicle
+
+    if isinstance(vehicle, Vehicle):
+        return "the truck (the study's sprung mass)"
+    if isinstance(vehicle, QuarterCar):
+        return "the truck (a quarter car)"
+    return as_system(vehicle).name or "the vehicle"
+
+
 def _flip(face: str) -> str:
     return {"left": "right", "right": "left"}.get(face, face)
 
@@ -426,7 +437,7 @@ def _envelopes(inputs: ReportInputs, vehicle: object, runs: _Runs, spacing: floa
             high[2], low[2] = -response.minimum[2], -response.maximum[2]
         maximum = np.maximum(maximum, high)
         minimum = np.minimum(minimum, low)
-    return Envelopes(static, maximum, minimum, inputs.bridge.supports, system.name)
+    return Envelopes(static, maximum, minimum, inputs.bridge.supports, vehicle_label(vehicle))
 
 
 # ---------------------------------------------------------------------------- flights
@@ -948,7 +959,7 @@ def analyse(inputs: ReportInputs, quick: bool | None = None) -> ReportAnalysis:
                 e, i = EFFECTS.index(col.effect), entries.index(col.key)
                 daf[d, s, c] = _values(response, direction, e, i)[0]
     sweep = Sweep(speeds, inputs.directions, cols, daf, lost, flight,
-                  as_system(vehicles[main]).name)  # fmt: skip
+                  vehicle_label(vehicles[main]))  # fmt: skip
     envelopes = _envelopes(inputs, vehicles[main], runs, main, FIELD_COUNTS[1 if quick else 0])
     # the worst valid requested crossing
     valid = study.rows[study.rows.valid & study.rows.daf.notna()]

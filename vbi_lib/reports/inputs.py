@@ -150,8 +150,8 @@ class ReportInputs:
         The road beyond the far support (the approach of a backward crossing, driven the
         other way), or ``None`` when flat.
     exit_length
-        Road kept beyond the far support [m]: the vehicle's wheelbase and 1 m, so that its
-        last axle leaves the bridge on a road (0 for one axle).
+        Road kept beyond the far support [m]: the longest vehicle's wheelbase and 1 m, so
+        that its last axle leaves the bridge on a road (0 for one axle).
     profile_source
         One line on where the deck profile comes from.
     profile_sha256
@@ -188,6 +188,8 @@ class ReportInputs:
     #: Whether each crossing starts on the approach as far before the bridge as its own speed
     #: needs (a rough approach of the length the rule gives): see :meth:`run`.
     per_speed_approach: bool = False
+    #: The wheelbase of the longest vehicle the report runs [m].
+    wheelbase: float = 0.0
 
     @property
     def speeds(self) -> tuple[float, ...]:
@@ -242,8 +244,7 @@ class ReportInputs:
         motion to decay (:func:`approach_length`; the same road, started later)."""
         if not self.per_speed_approach:
             return self.bridge_start
-        wheelbase = as_system(self.vehicle).wheelbase
-        needed = max(approach_length(self.vehicle, speed), wheelbase + MIN_APPROACH)
+        needed = max(approach_length(self.vehicle, speed), self.wheelbase + MIN_APPROACH)
         return min(self.bridge_start, needed)
 
     def run(self, direction: str, speed: float | None = None) -> Run:
@@ -674,10 +675,12 @@ def prepare(parameters: ReportParameters) -> ReportInputs:
     spacing = p.vehicle.rear_axle_spacing
     vehicles = {None: vehicle} if spacing is None else {spacing[0]: vehicle}
     fastest = float(sweep_speeds(p.speeds, 2)[-1])
-    wheelbase = as_system(vehicle).wheelbase
+    # the longest vehicle the report may run (a design truck at the longest rear spacing)
+    longest = vehicle if spacing is None else _vehicle(p, spacing[1])
+    wheelbase = as_system(longest).wheelbase
     exit_length = wheelbase + 1.0 if wheelbase > 0 else 0.0
     # on a flat approach the vehicle stays at rest in equilibrium: it only has to fit on it
-    rough = p.profile.file is None or p.profile.approach == "iso8608"
+    rough = p.profile.approach == "iso8608"
     needed = approach_length(vehicle, fastest) if rough else MIN_APPROACH
     needed = max(needed, wheelbase + MIN_APPROACH)
     length = p.profile.approach_length or needed
@@ -758,4 +761,5 @@ def prepare(parameters: ReportParameters) -> ReportInputs:
         approach_back=approach_back,
         exit_length=exit_length,
         per_speed_approach=rough and not p.profile.approach_length,
+        wheelbase=wheelbase,
     )

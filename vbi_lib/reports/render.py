@@ -17,6 +17,7 @@ import html
 import io
 import math
 import platform
+import re
 from collections.abc import Iterable, Sequence
 
 import numpy as np
@@ -137,10 +138,10 @@ def figure_html(fig: object, caption: str = "") -> str:
     import matplotlib.pyplot as plt
 
     buffer = io.StringIO()
-    fig.savefig(buffer, format="svg", bbox_inches="tight")
+    fig.savefig(buffer, format="svg", bbox_inches="tight", metadata={"Date": None})
     plt.close(fig)
     svg = buffer.getvalue()
-    svg = svg[svg.index("<svg") :]
+    svg = re.sub(r"<metadata>.*?</metadata>", "", svg[svg.index("<svg") :], flags=re.DOTALL)
     note = f'<figcaption class="vbi-caption">{_e(caption)}</figcaption>' if caption else ""
     return f'<figure class="vbi-figure">{svg}{note}</figure>'
 

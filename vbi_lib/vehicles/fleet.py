@@ -439,6 +439,7 @@ def governing_rear_spacing(
     high: float = REAR_SPACING_RANGE[1],
     *,
     direction: str = "both",
+    side: str | Sequence[str] = "both",
 ) -> RearSpacingSearch:
     """The rear axle spacing of the design truck that gives the largest static effect.
 
@@ -461,6 +462,9 @@ def governing_rear_spacing(
     direction
         ``"forward"``, ``"backward"`` or ``"both"`` (default): the directions the truck may
         cross in.
+    side
+        Face of the shear at a support: ``"both"`` (default: the larger), ``"left"`` or
+        ``"right"``, one for all sections or one each.
 
     Returns
     -------
@@ -484,15 +488,24 @@ def governing_rear_spacing(
     count = max(1, int(round((high - low) / (0.5 * ft)))) + 1
     spacings = np.linspace(low, high, count)
     x = np.atleast_1d(np.asarray(sections, dtype=float))
+    sides = [side] * x.size if isinstance(side, str) else list(side)
+    if len(sides) != x.size or any(s not in ("both", *SIDES) for s in sides):
+        raise ValueError(
+            f"side={side!r} must be 'both', 'left' or 'right', or one of them per section"
+        )
     extreme = np.empty((count, len(EFFECTS), x.size))
     for k, spacing in enumerate(spacings):
         offsets = (0.0, HS20_FRONT_SPACING, HS20_FRONT_SPACING + spacing)
         best = np.zeros((len(EFFECTS), x.size))
-        for side in SIDES:
-            env = static_envelope(spans, EI, x, HS20_AXLE_LOADS, offsets, side=side,
+        for face in SIDES:
+            take = np.array([s in ("both", face) for s in sides])
+            if not take.any():
+                continue
+            env = static_envelope(spans, EI, x[take], HS20_AXLE_LOADS, offsets, side=face,
                                   direction=direction)  # fmt: skip
             for values in (env.maximum, env.minimum):
-                best = np.where(np.abs(values) > np.abs(best), values, best)
+                part = best[:, take]
+                best[:, take] = np.where(np.abs(values) > np.abs(part), values, part)
         extreme[k] = best
     size = np.abs(extreme)
     top = size.max(axis=0)
