@@ -232,6 +232,8 @@ def continuous_statics(
     a = _stations("load_position", load_position, total)
     shape = np.broadcast_shapes(x.shape, a.shape)
     n = lengths.size
+    if x.ndim == 2 and a.ndim == 2 and x.shape[0] == 1 and a.shape[1] == 1:
+        return _influence_matrix(x[0], a[:, 0], lengths, supports, EI, force, side)
     # everything of the load alone is computed once per load position, then broadcast
     moments, k, al, bl, big = _support_moments(a.ravel(), lengths, supports, force)
     aligned = (1,) * (len(shape) - a.ndim) + a.shape  # a's axes, right-aligned with shape
@@ -267,6 +269,57 @@ def continuous_statics(
     end_moments = m_left * rest * (length**2 - rest**2) + m_right * s * (length**2 - s**2)
     deflection = np.where(loaded, w0, 0.0) + end_moments / (6.0 * length * EI)
     return BeamStatics(deflection, moment, shear)
+
+
+def _influence_matrix(
+    x: np.ndarray,
+    a: np.ndarray,
+    lengths: np.ndarray,
+    supports: np.ndarray,
+    EI: float,
+    force: float,
+    side: str,
+) -> BeamStatics:
+    """:func:`continuous_statics` of sections ``x`` ``(n_s,)`` under loads ``a`` ``(n_a,)``,
+    ``(n_a, n_s)``: the support moments' part as one matrix product (the same formulas)."""
+    n = lengths.size
+    moments, k, al, bl, big = _support_moments(a, lengths, supports, force)  # (n + 1, n_a)
+    found = np.searchsorted(supports, x, side="left" if side == "left" else "right")
+    j = np.clip(found - 1, 0, n - 1)
+    s = x - supports[j]
+    length = lengths[j]
+    rest = length - s
+    columns = np.arange(x.size)
+    # each section's share of the moments over its span's two supports
+    weights = np.zeros((3, n + 1, x.size))
+    weights[0, j, columns] = rest * (length**2 - rest**2) / (6.0 * length * EI)
+    weights[0, j + 1, columns] = s * (length**2 - s**2) / (6.0 * length * EI)
+    weights[1, j, columns] = rest / length
+    weights[1, j + 1, columns] = s / length
+    weights[2, j, columns] = -1.0 / length
+    weights[2, j + 1, columns] = 1.0 / length
+    ends = moments.T @ weights  # (3, n_a, n_s)
+    # the loaded span's own simple-span part, where the load is in the section's span
+    loaded = k[:, None] == j[None, :]
+    al, bl = al[:, None], bl[:, None]
+    before = s <= al
+    m0 = np.where(before, force * bl * s / length, force * al * rest / length)
+    at = s == al
+    if side == "left":
+        passed = (s > al) | (at & (al == 0.0))
+    else:
+        passed = (s > al) | (at & (al < length))
+    v0 = force * bl / length - np.where(passed, force, 0.0)
+    w0 = np.where(
+        before,
+        force * bl * s * (length**2 - bl**2 - s**2),
+        force * al * rest * (length**2 - al**2 - rest**2),
+    ) / (6.0 * length * EI)
+    return BeamStatics(
+        np.where(loaded, w0, 0.0) + ends[0],
+        np.where(loaded, m0, 0.0) + ends[1],
+        np.where(loaded, v0, 0.0) + ends[2],
+    )
 
 
 # ---------------------------------------------------------------------------- envelopes
