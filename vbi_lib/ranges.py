@@ -195,9 +195,9 @@ RANGES: dict[str, Range] = {
     "truck_mass": Range(
         "mass of a truck: the study's one sprung mass, or a report vehicle's weight over g",
         "kg",
-        (1.0, 1e6),
+        (100.0, 1e6),
         (9070.0, 2e5),
-        "from a toy to the heaviest load ever moved on one suspension",
+        "a vehicle under 100 kg is no truck, and no single vehicle weighs 1000 t",
         "trucks that load bridges, from AASHTO's lightest design truck, H10 (20 kip, 9.07 t), "
         "to a 200 t permit load; a lighter value is most often a unit slip (kN for kip)",
         "reports (vehicle.mass of a sprung-mass or quarter-car truck, the weight of every "

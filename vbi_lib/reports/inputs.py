@@ -691,9 +691,10 @@ def prepare(parameters: ReportParameters) -> ReportInputs:
             "whole vehicle starts on the approach; give a longer one or leave the key out"
         )  # fmt: skip
     generated = None
-    warnings: list[str] = []
+    warnings: list[str] = list(p.warnings)
     if p.profile.file is not None:
-        deck, source, sha256, notes, warnings = _measured_deck(p, bridge.length)
+        deck, source, sha256, notes, said = _measured_deck(p, bridge.length)
+        warnings += said
         back_generated = None
     else:
         road = Profile.iso8608(

@@ -105,12 +105,20 @@ class Key:
     range: str | None = None
     default: Any = _MISSING
     choices: tuple[str, ...] = ()
+    #: Outside the intended range but inside the hard one: a warning, not a refusal (a
+    #: truck's mass: a light truck is possible, and a unit slip the likely reason).
+    warn: bool = False
 
     @property
     def bounds(self) -> tuple[float, float]:
         """The range [SI]: the entry's soft (intended) range, else its hard one."""
         spec = RANGES[self.range]
         return spec.soft or spec.hard
+
+    @property
+    def hard(self) -> tuple[float, float]:
+        """The entry's hard range [SI]."""
+        return RANGES[self.range].hard
 
     @property
     def open_low(self) -> bool:
@@ -142,7 +150,7 @@ SCHEMA: dict[str, Any] = {
     "vehicle": {
         "type": Key("choice", "sprung-mass, quarter-car, hs20, hl93-truck, hl93-tandem or axles",
                     default="sprung-mass", choices=VEHICLE_TYPES),
-        "mass": Key("mass", "sprung mass (or weight) of the truck", "truck_mass"),
+        "mass": Key("mass", "sprung mass (or weight) of the truck", "truck_mass", warn=True),
         "unsprung_mass": Key("mass", "unsprung (axle) mass of a quarter car", "unsprung_mass"),
         "frequency": Key("frequency", "body-bounce frequency (trucks: 3 Hz)",
                          "vehicle_frequency"),
@@ -286,6 +294,9 @@ class ReportParameters:
     sections
         Stations from the first support [m], sorted; ``None`` for the default (the midspans
         and the interior supports).
+    warnings
+        Sentences on values outside their intended range that are read all the same (a
+        truck's mass), each naming the likely slip.
     effects
         The effects reported, in the order of :data:`vbi_lib.beam_statics.EFFECTS`.
     direction
@@ -304,6 +315,7 @@ class ReportParameters:
     sections: tuple[float, ...] | None = None
     effects: tuple[str, ...] = EFFECTS
     direction: str = "both"
+    warnings: tuple[str, ...] = ()
 
 
 # ---------------------------------------------------------------------------- checks of one value
@@ -400,8 +412,14 @@ def _likely_slip(number: str, unit: str, kind: str, key: Key) -> str:
     return f"; did you mean {' or '.join(found[:2])}?" if found else ""
 
 
-def _quantity(name: str, key: Key, value: object, given: dict[str, str]) -> float:
-    """A quantity of ``key.kind`` within the key's range; a mass may be given as a weight."""
+def _quantity(
+    name: str, key: Key, value: object, given: dict[str, str], warnings: list | None = None
+) -> float:
+    """A quantity of ``key.kind`` within the key's range; a mass may be given as a weight.
+
+    A key with ``warn`` is refused outside its entry's hard range only; outside the
+    intended range a sentence goes to ``warnings`` (naming the likely slip) instead.
+    """
     kinds = {"mass": ("mass", "force"), "mass_per_length": ("mass_per_length", "force_per_length")}
     kind, weight_kind = kinds.get(key.kind, (key.kind, None))
     read_kind = kind
@@ -428,7 +446,13 @@ def _quantity(name: str, key: Key, value: object, given: dict[str, str]) -> floa
         if key.kind == "mass":
             lead = f"is a weight of {_g(si / 1000)} t, which " if read_kind == "force" else ""
             rule = lead + rule + _likely_slip(reading.number, reading.unit, read_kind, key)
-        raise ParameterError(name, value, rule)
+        low, high = key.hard
+        if key.warn and not low <= si <= high:
+            spec = RANGES[key.range]
+            rule = f"is outside {spec.hard_text()} ({spec.reason}; {rule})"
+        if not (key.warn and warnings is not None and low <= si <= high):
+            raise ParameterError(name, value, rule)
+        warnings.append(f"{name}={value!r} {rule}.".replace("?.", "?"))
     given[name] = reading.text
     return si
 
@@ -627,6 +651,8 @@ def _value(section: str, name: str, values: dict, schema: dict[str, Key], **cont
     }
     if key.kind in readers:
         return readers[key.kind]()
+    if key.warn:
+        return _quantity(full, key, value, given, context.get("warnings"))
     if key.range is None and key.kind in ("stiffness",):  # no range of its own: > 0
         try:
             reading = u.read_quantity(value, key.kind, name=full)
@@ -707,7 +733,7 @@ def _bridge(values: dict, given: dict[str, str]) -> BridgeParameters:
     return result
 
 
-def _vehicle(values: dict, given: dict[str, str]) -> VehicleParameters:
+def _vehicle(values: dict, given: dict[str, str], warnings: list[str]) -> VehicleParameters:
     schema = SCHEMA["vehicle"]
     kind = _value("vehicle", "type", values, schema)
     allowed = VEHICLE_KEYS[kind]
@@ -718,7 +744,10 @@ def _vehicle(values: dict, given: dict[str, str]) -> VehicleParameters:
                 f"vehicle.{name}", values[name], f"does not apply to vehicle.type {kind}; it "
                 f"belongs to {', '.join(others)}. {kind} takes: {', '.join(allowed)}"
             )  # fmt: skip
-    read = {name: _value("vehicle", name, values, schema, given=given) for name in allowed}
+    read = {
+        name: _value("vehicle", name, values, schema, given=given, warnings=warnings)
+        for name in allowed
+    }
     if kind in ("sprung-mass", "quarter-car"):
         _required("vehicle.mass", read["mass"], "mass: 35 t (or a weight, 77.2 kip)")
         _required("vehicle.frequency", read["frequency"], "frequency: 2.5 Hz")
@@ -742,7 +771,7 @@ def _vehicle(values: dict, given: dict[str, str]) -> VehicleParameters:
                 "vehicle.spacings", values["spacings"], f"add up to {total:.1f} m from the "
                 f"first axle to the last, more than the {hard:g} m of any vehicle"
             )  # fmt: skip
-        _truck_weight("vehicle.loads", values["loads"], sum(read["loads"]))
+        _truck_weight("vehicle.loads", values["loads"], sum(read["loads"]), warnings)
         read["spacings"] = tuple(spacings)
     if kind in ("hs20", "hl93-truck", "hl93-tandem", "axles") and read.get("frequency") is None:
         read["frequency"] = 3.0
@@ -763,8 +792,9 @@ def _vehicle(values: dict, given: dict[str, str]) -> VehicleParameters:
     )
 
 
-def _truck_weight(name: str, value: object, weight: float) -> None:
-    """A vehicle's weight whose mass lies outside a truck's range names the likely slip."""
+def _truck_weight(name: str, value: object, weight: float, warnings: list[str]) -> None:
+    """A vehicle's weight whose mass lies outside a truck's intended range is warned about
+    (outside its hard range refused), naming the likely slip."""
     key = Key("mass", "", "truck_mass")
     mass = weight / u.g
     if _inside(key, mass):
@@ -784,10 +814,14 @@ def _truck_weight(name: str, value: object, weight: float) -> None:
                         f"; in {other} instead of {unit} it would weigh {_g(mass * factor / 1e3)} t"
                     )
                     break
-    raise ParameterError(
-        name, value, f"weigh {_g(mass / 1000)} t in all, outside the intended range "
-        f"{_range_text(key, 't')} of a truck's mass (vbi_lib.ranges.RANGES['truck_mass']){slip}"
-    )  # fmt: skip
+    rule = (
+        f"weigh {_g(mass / 1000)} t in all, outside the intended range {_range_text(key, 't')} "
+        f"of a truck's mass (vbi_lib.ranges.RANGES['truck_mass']){slip}"
+    )
+    low, high = key.hard
+    if not low <= mass <= high:
+        raise ParameterError(name, value, rule)
+    warnings.append(f"{name}={value!r} {rule}.")
 
 
 def _profile(values: dict, given: dict[str, str], base_dir: Path) -> ProfileParameters:
@@ -879,15 +913,14 @@ def read_parameters(values: Mapping[str, Any], base_dir: str | Path = ".") -> Re
 did you mean 'span'? allowed: span, spans, n_spans, k_mid, EI, mass_per_length, \
 first_frequency, damping_ratio, modes
 
-    A truck's weight in kN where kip was meant:
+    A truck's weight in kN where kip was meant is read, and warned about:
 
-    >>> read_parameters({  # doctest: +ELLIPSIS
+    >>> p = read_parameters({
     ...     "bridge": {"span": "140 ft", "k_mid": "222278 lbf/in", "first_frequency": "2.08 Hz"},
     ...     "vehicle": {"mass": "77.2 kN", "frequency": "2.5 Hz"}, "speeds": ["30 mph"]})
-    Traceback (most recent call last):
-    ...
-    vbi_lib.reports.parameters.ParameterError: vehicle.mass='77.2 kN' is a weight of 7.87 t, \
-which is outside the intended range 9 to 200 t ... did you mean '77.2 kip' (35 t)?
+    >>> print(p.warnings[0])  # doctest: +ELLIPSIS
+    vehicle.mass='77.2 kN' is a weight of 7.87 t, which is outside the intended range 9.07 to \
+200 t ... did you mean '77.2 kip' (35 t)?
     """
     if not isinstance(values, Mapping):
         raise ParameterError(
@@ -907,7 +940,8 @@ which is outside the intended range 9 to 200 t ... did you mean '77.2 kip' (35 t
     bridge = _bridge(sections["bridge"], given)
     if "vehicle" not in values:
         raise ParameterError("vehicle", _MISSING, "is required, e.g. vehicle: {mass: 35 t, ...}")
-    vehicle = _vehicle(sections["vehicle"], given)
+    warnings: list[str] = []
+    vehicle = _vehicle(sections["vehicle"], given, warnings)
     profile = _profile(sections["profile"], given, Path(base_dir))
     top = dict(values)
     speeds = _value("", "speeds", top, SCHEMA, given=given)
@@ -940,6 +974,7 @@ which is outside the intended range 9 to 200 t ... did you mean '77.2 kip' (35 t
         sections=stations,
         effects=effects,
         direction=_value("", "direction", top, SCHEMA),
+        warnings=tuple(warnings),
     )
 
 
