@@ -238,13 +238,33 @@ class Crossing(ContactFlags):
         on = (positions >= -1e-12) & (positions <= self.bridge.length + 1e-12)
         return np.where(on, self.axle_contact_force, 0.0), positions
 
+    def _active(self, loads: np.ndarray, q: np.ndarray) -> int:
+        """First node from which the bridge responds: before the first axle reaches it the
+        bridge is at rest and unloaded (every modal coordinate and load exactly 0), so every
+        section response there is exactly 0 and need not be computed."""
+        loaded = np.flatnonzero((loads != 0.0).any(axis=1) | (q != 0.0).any(axis=1))
+        return max(0, int(loaded[0]) - 1) if loaded.size else q.shape[0]
+
+    def _histories(self, function, sections, *args):  # noqa: ANN001, ANN002, ANN202
+        """``function`` (section_history or section_histories) over the active nodes, with
+        exact zeros before them."""
+        modes, q = self.modal_history()
+        loads, positions = self._axles()
+        start = self._active(loads, q)
+        part = function(modes, q[start:], loads[start:], positions[start:], sections, *args)
+        out = []
+        for values in part if isinstance(part, tuple) else (part,):
+            full = np.zeros((q.shape[0], sections.size))
+            full[start:] = values
+            out.append(full)
+        return tuple(out) if isinstance(part, tuple) else out[0]
+
     def _section(
         self, x: float | np.ndarray, effect: str, method: str, side: str | tuple[str, ...] = "left"
     ) -> np.ndarray:
-        modes, q = self.modal_history()
+        modes, _ = self.modal_history()
         sections = snap_to_supports(modes.supports, _stations(x))
-        loads, positions = self._axles()
-        values = section_history(modes, q, loads, positions, sections, effect, method, side)
+        values = self._histories(section_history, sections, effect, method, side)
         return values[:, 0] if np.ndim(x) == 0 else values
 
     def displacement_at(
@@ -325,7 +345,7 @@ class Crossing(ContactFlags):
             A station off the bridge, an unknown method or side.
         """
         method = check_method(method)
-        modes, q = self.modal_history()
+        modes, _ = self.modal_history()
         sections = snap_to_supports(modes.supports, _stations(x))
         system = as_system(self.vehicle)
         axles = (system.static_loads, system.offsets)
@@ -340,10 +360,7 @@ class Crossing(ContactFlags):
                     f"side={side!r} must give one face for each of the {sections.size} stations"
                 )
         static = static_counterpart(modes, sections, *axles, method, faces)
-        loads, positions = self._axles()
-        displacement, moment, shear = section_histories(
-            modes, q, loads, positions, sections, method, faces
-        )
+        displacement, moment, shear = self._histories(section_histories, sections, method, faces)
         plural = "s" if modes.count > 1 else ""
         notes = [
             f"section responses by the {method} method with {modes.count} mode{plural}; "

@@ -71,9 +71,9 @@ __all__ = [
 ]
 
 #: Speeds of the sweep: (full, quick), for the study's model and for the modal model.
-SWEEP_COUNTS = {"one-coordinate": (40, 12), "modal": (16, 8)}
+SWEEP_COUNTS = {"one-coordinate": (40, 12), "modal": (12, 6)}
 #: Positions of the deck's roughness tried: (full, quick), same keys.
-POSITION_COUNTS = {"one-coordinate": (24, 8), "modal": (6, 3)}
+POSITION_COUNTS = {"one-coordinate": (24, 8), "modal": (4, 3)}
 #: Stations of the envelopes along the bridge: (full, quick).
 FIELD_COUNTS = (61, 31)
 #: The JSON's row keys, in order (SI units).
@@ -883,24 +883,22 @@ class ReportAnalysis:
         return out
 
 
-def _spacings(inputs: ReportInputs, cols, entries) -> tuple[list, RearSpacingSearch | None]:  # noqa: ANN001
-    """The rear spacing each column runs with, and the search (for a design truck's range)."""
+def _spacings(
+    inputs: ReportInputs, cols: tuple[Column, ...]
+) -> tuple[list, RearSpacingSearch | None]:
+    """The rear spacing each column runs with, and the search (for a design truck's range):
+    each column's own, its shear on its own face."""
     spacing = inputs.parameters.vehicle.rear_axle_spacing
     if spacing is None:
         return [None] * len(cols), None
     low, high = spacing
     if high - low < 1e-9:
         return [low] * len(cols), None
-    x = [e[0] for e in entries]
-    side = ["both" if not col.face else col.face for col in (
-        next(c for c in cols if c.key == entry) for entry in entries
-    )]  # fmt: skip
-    search = governing_rear_spacing(inputs.bridge.spans, inputs.bridge.EI, x, low, high,
-                                    direction=inputs.parameters.direction, side=side)  # fmt: skip
-    out = []
-    for col in cols:
-        e, i = EFFECTS.index(col.effect), entries.index(col.key)
-        out.append(float(search.governing[e, i]))
+    search = governing_rear_spacing(
+        inputs.bridge.spans, inputs.bridge.EI, [col.place.x for col in cols], low, high,
+        direction=inputs.parameters.direction, side=[col.face or "both" for col in cols],
+    )  # fmt: skip
+    out = [float(search.governing[EFFECTS.index(col.effect), c]) for c, col in enumerate(cols)]
     return out, search
 
 
@@ -928,7 +926,7 @@ def analyse(inputs: ReportInputs, quick: bool | None = None) -> ReportAnalysis:
     quick = inputs.parameters.quick if quick is None else bool(quick)
     cols = columns(inputs)
     entries = _entries(cols)
-    spacing_of, search = _spacings(inputs, cols, entries)
+    spacing_of, search = _spacings(inputs, cols)
     vehicles = {s: inputs.vehicles.get(s) or vehicle_at(inputs.parameters, s)
                 for s in dict.fromkeys(spacing_of)}  # fmt: skip
     counts = Counter(spacing_of)

@@ -596,29 +596,55 @@ def envelopes_figure(analysis: ReportAnalysis) -> str:
     return block("Envelopes along the bridge", _p(text), figure_html(fig), css="vbi-keep")
 
 
+def _decimated(x: np.ndarray, y: np.ndarray, count: int = 1200) -> tuple[np.ndarray, np.ndarray]:
+    """``(x, y)`` cut to about ``2 count`` points for a plot, keeping each bucket's smallest
+    and largest value in order (so every peak is drawn)."""
+    if x.size <= 2 * count:
+        return x, y
+    edges = np.linspace(0, x.size, count + 1).astype(int)
+    keep = []
+    for lo, hi in zip(edges[:-1], edges[1:], strict=True):
+        part = y[lo:hi]
+        keep += sorted({lo + int(np.argmin(part)), lo + int(np.argmax(part))})
+    keep = np.array(keep)
+    return x[keep], y[keep]
+
+
 def worst_figure(analysis: ReportAnalysis) -> str:
     """The worst requested crossing's midspan displacements and contact forces."""
     import matplotlib.pyplot as plt
 
     crossing = analysis.worst
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.2, 4.4), sharex=True)
-    crossing.plot(top, kind="displacement")
-    crossing.plot(bottom, kind="contact")
+    x = display.value(crossing.position - crossing.bridge_start, "length")
+    for j in range(crossing.bridge.n_spans):
+        y = crossing.midspan_displacement[:, j] / crossing.static_deflection
+        top.plot(*_decimated(x, y), lw=1, label=f"span {j + 1}")
+    system = as_system(crossing.vehicle)
+    ratios = crossing.axle_contact_force / system.static_loads[None, :]
+    for a in range(system.n_axles):
+        label = f"axle {a + 1}" if system.n_axles > 1 else None
+        bottom.plot(*_decimated(x, ratios[:, a]), lw=1, label=label)
+    bottom.axhline(0.0, color="k", lw=0.8)
+    for ax in (top, bottom):
+        ax.axvspan(0, display.value(crossing.bridge.length, "length"), color="0.93", zorder=0)
+        if len(ax.get_lines()) > 2:
+            ax.legend(loc="best", fontsize="x-small")
     top.set_xlim(*worst_window(analysis))
     top.set_ylabel("displacement / static [-]")
     bottom.set_ylabel("contact force / load [-]")
+    bottom.set_xlabel(display.label("first axle from the start of the bridge", "length"))
     top.set_title(worst_title(analysis), fontsize="small")
     fig.tight_layout()
     direction, _, _ = analysis.worst_key
     seen = "as the vehicle sees it, from the far support" if direction == "backward" else "forward"
     text = (
-        "The crossing with the largest valid DAF: each span's midspan displacement over its "
-        "static deflection, and each axle's contact force over its static load, against the "
-        "first axle's position from the bridge's first support "
-        f"({seen}). "
-        "Where a contact force reaches zero a tyre leaves the road; below zero a bilateral "
-        "contact would pull on it."
-    )  # fmt: skip
+        "The crossing with the largest valid DAF: each span's midspan displacement over the "
+        "static deflection the crossing divides by, and each axle's contact force over its "
+        "static load, against the first axle's position from the bridge's first support "
+        f"({seen}). Where a contact force reaches zero a tyre leaves the road; below zero a "
+        "bilateral contact would pull on it."
+    )
     return block("The worst requested crossing", _p(text), figure_html(fig), css="vbi-keep")
 
 
