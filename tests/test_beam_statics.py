@@ -13,12 +13,7 @@ import numpy as np
 import pytest
 from beam_fe import Beam
 
-from vbi_lib.beam_statics import (
-    continuous_statics,
-    field_envelope,
-    static_envelope,
-    support_face,
-)
+from vbi_lib.beam_statics import continuous_statics, field_envelope, static_envelope, support_face
 from vbi_lib.closed_forms import point_load_statics
 
 EI = 3e9
@@ -249,3 +244,12 @@ def test_bad_input_is_refused_with_a_sentence() -> None:
         continuous_statics(1.0, 1.0, [10.0], EI, side="top")
     with pytest.raises(ValueError, match="direction='up' must be one of 'forward'"):
         static_envelope([10.0], EI, [5.0], direction="up")
+
+
+def test_the_point_load_statics_are_found_where_they_were() -> None:
+    """Chapters, models and studies import continuous_statics from vbi_lib.beam_statics."""
+    import vbi_lib.beam_influence as influence
+    import vbi_lib.beam_statics as statics
+
+    assert statics.continuous_statics is influence.continuous_statics
+    assert statics.support_face is influence.support_face and statics.SIDES == ("left", "right")

@@ -36,6 +36,7 @@ from .sections import (
     SectionResponse,
     check_method,
     check_side,
+    from_first_load,
     governing_faces,
     section_histories,
     section_history,
@@ -238,26 +239,9 @@ class Crossing(ContactFlags):
         on = (positions >= -1e-12) & (positions <= self.bridge.length + 1e-12)
         return np.where(on, self.axle_contact_force, 0.0), positions
 
-    def _active(self, loads: np.ndarray, q: np.ndarray) -> int:
-        """First node from which the bridge responds: before the first axle reaches it the
-        bridge is at rest and unloaded (every modal coordinate and load exactly 0), so every
-        section response there is exactly 0 and need not be computed."""
-        loaded = np.flatnonzero((loads != 0.0).any(axis=1) | (q != 0.0).any(axis=1))
-        return max(0, int(loaded[0]) - 1) if loaded.size else q.shape[0]
-
     def _histories(self, function, sections, *args):  # noqa: ANN001, ANN002, ANN202
-        """``function`` (section_history or section_histories) over the active nodes, with
-        exact zeros before them."""
         modes, q = self.modal_history()
-        loads, positions = self._axles()
-        start = self._active(loads, q)
-        part = function(modes, q[start:], loads[start:], positions[start:], sections, *args)
-        out = []
-        for values in part if isinstance(part, tuple) else (part,):
-            full = np.zeros((q.shape[0], sections.size))
-            full[start:] = values
-            out.append(full)
-        return tuple(out) if isinstance(part, tuple) else out[0]
+        return from_first_load(function, modes, q, *self._axles(), sections, *args)
 
     def _section(
         self, x: float | np.ndarray, effect: str, method: str, side: str | tuple[str, ...] = "left"
@@ -299,9 +283,8 @@ class Crossing(ContactFlags):
     ) -> np.ndarray:
         """Shear history [N] (``V = dM/dx``) at stations ``x`` from the bridge start.
 
-        The shear jumps at an axle and, by the reaction, at an interior support: ``side``
-        gives the face, ``"left"`` (default: the value just left of the station) or
-        ``"right"`` (just right of it); at the bridge's ends both give the face on the beam.
+        The shear jumps at an axle and, by the reaction, at a support: ``side`` gives the face,
+        ``"left"`` (default) or ``"right"``; at the bridge's ends both give the one on it.
         By the mode-acceleration method by default; the mode-displacement series
         (third derivatives of the modes) does not converge under a concentrated load.
         Shapes and errors as :meth:`displacement_at` (and an unknown ``side``).
@@ -318,11 +301,9 @@ class Crossing(ContactFlags):
 
         Each effect's static counterpart is its extreme when the vehicle's weight crawls
         across (:func:`vbi_lib.beam_statics.static_envelope`), so each section and effect
-        has its own DAF; the result also gives where and when each extreme occurs and the
-        other effects at that instant.  At an interior support the shear jumps by the
-        reaction: by default the result gives the governing face, the one whose static shear
-        is the larger in size (the design shear), and names it in ``faces`` (and the
-        ``face`` column of ``to_dataframe``).
+        has its own DAF, with where and when each extreme occurs.  At an interior support
+        the shear jumps by the reaction: by default the result gives the governing face (the
+        larger static shear: the design shear) and names it (``faces``, a ``face`` column).
 
         Parameters
         ----------

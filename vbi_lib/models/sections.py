@@ -79,6 +79,7 @@ __all__ = [
     "FACES",
     "METHODS",
     "SectionResponse",
+    "from_first_load",
     "governing_faces",
     "section_histories",
     "section_history",
@@ -263,6 +264,25 @@ def section_histories(
         for e in range(len(EFFECTS)):
             values[e][on] += loads[on, i, None] * (exact[e] - static_q @ shapes[e].T)
     return tuple(values)
+
+
+def from_first_load(function, modes, q, loads, positions, sections, *args):  # noqa: ANN001, ANN002, ANN201
+    """``function`` (:func:`section_history` or :func:`section_histories`) from the node
+    before the first load on the bridge, exact zeros before it.
+
+    Before the first axle reaches the bridge it is at rest and unloaded (every modal
+    coordinate and load exactly 0), so every section response there is exactly 0; on a long
+    approach most of a crossing's nodes are there.
+    """
+    loaded = np.flatnonzero((loads != 0.0).any(axis=1) | (q != 0.0).any(axis=1))
+    start = max(0, int(loaded[0]) - 1) if loaded.size else q.shape[0]
+    part = function(modes, q[start:], loads[start:], positions[start:], sections, *args)
+    out = []
+    for values in part if isinstance(part, tuple) else (part,):
+        full = np.zeros((q.shape[0], sections.size))
+        full[start:] = values
+        out.append(full)
+    return tuple(out) if isinstance(part, tuple) else out[0]
 
 
 def _modal_envelope(

@@ -24,12 +24,16 @@ Every route takes the same file:
 * :func:`write_reports` from Python.
 
 The package's modules, one job each: :mod:`.parameter_file` (reads a parameter file under
-caps), :mod:`.parameters` (checks it, key by key), :mod:`.inputs` (the bridge, vehicle and
-road, with the approaches and the places), :mod:`.analysis` (the crossings),
-:mod:`.results_file` (the results as JSON and CSV), :mod:`.render` (HTML text, tables and
-figures, escaped), :mod:`.running` (the kernel, the files, clean-up on failure and signals),
-:mod:`.kernel` and :mod:`.printing` (the kernel and chromium), :mod:`.cli` (the command line)
-and :mod:`.legacy` (the old flat ``name=value`` parameters).
+caps), :mod:`.values` and :mod:`.parameters` (check it, value by value and key by key),
+:mod:`.inputs` (the bridge, vehicle and road, with the approaches and the places) and
+:mod:`.deck` (a measured deck, checked for unit slips), :mod:`.analysis` (the crossings, the
+DAF of each place and effect, the sweep) with :mod:`.along` (envelopes, flights),
+:mod:`.road` (roughness, positions, the study's span DAF) and :mod:`.codes` (the design
+codes), :mod:`.results_file` (the results as JSON and CSV), :mod:`.render`,
+:mod:`.figures` and :mod:`.appendix` (the HTML, escaped), :mod:`.running` (the kernel, the
+files, clean-up on failure and signals), :mod:`.kernel` and :mod:`.printing` (the kernel and
+chromium), :mod:`.cli` (the command line) and :mod:`.legacy` (the old flat ``name=value``
+parameters).
 """
 
 from __future__ import annotations

@@ -27,7 +27,6 @@ and said.
 
 from __future__ import annotations
 
-import warnings
 from collections import Counter
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -35,18 +34,27 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
-from .. import amplification as amp
 from .. import display
-from ..beam_statics import EFFECTS, QUANTITY, StaticEnvelope, field_envelope
+from ..beam_statics import EFFECTS, QUANTITY, field_envelope
 from ..bridges import Bridge
-from ..models import BatchResult, Crossing, SectionResponse, simulate, simulate_many
-from ..profiles import Profile, iso8608_class
-from ..roughness import fit_iso8608, iri
-from ..units import ft
-from ..validity import VbiWarning
-from ..vehicles import as_system
+from ..models import Crossing, SectionResponse, simulate, simulate_many
+from ..profiles import Profile
 from ..vehicles.fleet import RearSpacingSearch, governing_rear_spacing
-from .inputs import Place, ReportInputs, sweep_speeds, vehicle_at
+from .along import Envelopes, Flights, envelopes, flights, flip, vehicle_label
+from .codes import Allowances, allowances, loaded_length
+from .columns import Column, columns
+from .columns import entries as station_entries
+from .inputs import ReportInputs, sweep_speeds, vehicle_at
+from .road import (
+    PositionStudy,
+    SpanRoughness,
+    SpeedStudy,
+    position_study,
+    quiet,
+    shifted_deck,
+    span_roughness,
+    speed_study,
+)
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -65,7 +73,9 @@ __all__ = [
     "allowances",
     "analyse",
     "columns",
+    "loaded_length",
     "position_study",
+    "shifted_deck",
     "span_roughness",
     "speed_study",
 ]
@@ -81,77 +91,6 @@ ROW_KEYS = (
     "speed_m_s", "section_m", "effect", "direction", "daf", "static", "dynamic",
     "lost_contact", "flight_fraction", "face", "sense", "place", "rear_axle_spacing_m", "valid",
 )  # fmt: skip
-
-
-def _quiet(function, *args, **kwargs):  # noqa: ANN001, ANN002, ANN003, ANN202
-    """Call ``function`` with the library's warnings kept, not shown: (result, messages)."""
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", VbiWarning)
-        result = function(*args, **kwargs)
-    return result, [str(w.message) for w in caught if issubclass(w.category, VbiWarning)]
-
-
-def vehicle_label(vehicle: object) -> str:
-    """How the report names a vehicle: the design truck's own name, else what it is."""
-    from ..vehicles import QuarterCar, Vehicle
-
-    if isinstance(vehicle, Vehicle):
-        return "the truck (the study's sprung mass)"
-    if isinstance(vehicle, QuarterCar):
-        return "the truck (a quarter car)"
-    return as_system(vehicle).name or "the vehicle"
-
-
-def _flip(face: str) -> str:
-    return {"left": "right", "right": "left"}.get(face, face)
-
-
-# ---------------------------------------------------------------------------- columns
-@dataclass(frozen=True)
-class Column:
-    """One result of a crossing: an effect at a place, on one face for a support's shear."""
-
-    place: Place
-    effect: str
-    face: str = ""
-
-    @property
-    def label(self) -> str:
-        """``"pier 1 (interior support), left face"``."""
-        return self.place.name + (f", {self.face} face" if self.face else "")
-
-    @property
-    def key(self) -> tuple[float, str]:
-        """The station and face a crossing's sections are computed at."""
-        return self.place.x, self.face or "left"
-
-
-def columns(inputs: ReportInputs) -> tuple[Column, ...]:
-    """Every place and effect the report gives (the displacement over a support, zero
-    statically, is left out; the shear of an interior support on both faces)."""
-    out = []
-    last = len(inputs.bridge.spans)
-    for place in inputs.places:
-        for effect in inputs.effects:
-            if effect == "displacement" and place.support is not None:
-                continue
-            if effect == "shear" and place.interior_support:
-                out += [Column(place, effect, "left"), Column(place, effect, "right")]
-            elif effect == "shear" and place.support == 0:
-                out.append(Column(place, effect, "right"))
-            elif effect == "shear" and place.support == last:
-                out.append(Column(place, effect, "left"))
-            else:
-                out.append(Column(place, effect))
-    return tuple(out)
-
-
-def _entries(cols: tuple[Column, ...]) -> list[tuple[float, str]]:
-    seen: list[tuple[float, str]] = []
-    for col in cols:
-        if col.key not in seen:
-            seen.append(col.key)
-    return seen
 
 
 # ---------------------------------------------------------------------------- the crossings
@@ -174,11 +113,11 @@ def _run(
     """One crossing in ``direction`` and its sections at ``entries`` (forward stations)."""
     run = inputs.run(direction, speed)
     x = inputs.to_run(np.array([e[0] for e in entries]), direction)
-    faces = tuple(f if direction == "forward" else _flip(f) for _, f in entries)
+    faces = tuple(f if direction == "forward" else flip(f) for _, f in entries)
     options = {"model": inputs.model}
     if inputs.modes is not None:
         options["modes"] = inputs.modes
-    crossing, said = _quiet(
+    crossing, said = quiet(
         simulate, run.bridge, vehicle, run.road, speed, run.bridge_start, **options
     )
     return crossing, crossing.sections(x, side=faces), said
@@ -352,496 +291,6 @@ class Sweep:
         return ax
 
 
-# ---------------------------------------------------------------------------- envelopes
-@dataclass(frozen=True, eq=False)
-class Envelopes:
-    """Static and dynamic envelopes along the bridge (forward stations and signs).
-
-    ``static`` is the exact static envelope of the vehicle's axles over the directions
-    asked (:func:`vbi_lib.beam_statics.field_envelope`, each interior support twice, both
-    faces); ``maximum`` and ``minimum`` ``(3, n)`` are the dynamic extremes over the
-    requested crossings of that vehicle at the same stations (crossings that lost contact
-    left out, unless all did).
-    """
-
-    static: StaticEnvelope
-    maximum: np.ndarray
-    minimum: np.ndarray
-    supports: tuple[float, ...]
-    vehicle: str
-
-    def to_dataframe(self) -> pd.DataFrame:
-        """One row per station and effect: static and dynamic extremes (display units)."""
-        rows = []
-        faces = self.static.faces
-        for e, effect in enumerate(EFFECTS):
-            quantity = QUANTITY[effect]
-            for i, x in enumerate(self.static.sections):
-                rows.append({
-                    display.label("station", "length"): display.value(x, "length"),
-                    "effect": effect,
-                    "face": faces[i] if effect == "shear" else "",
-                    "unit": display.symbol(quantity),
-                    "static maximum": display.value(self.static.maximum[e, i], quantity),
-                    "static minimum": display.value(self.static.minimum[e, i], quantity),
-                    "dynamic maximum": display.value(self.maximum[e, i], quantity),
-                    "dynamic minimum": display.value(self.minimum[e, i], quantity),
-                })  # fmt: skip
-        return pd.DataFrame(rows)
-
-    def plot(self, ax: Axes | None = None, effect: str = "moment") -> Axes:
-        """Static (dashed) and dynamic (solid) envelope of ``effect`` along the bridge."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 2.6))
-        e = EFFECTS.index(effect)
-        quantity = QUANTITY[effect]
-        x = display.value(self.static.sections, "length")
-        for bound, static, dynamic, color in (
-            ("maximum", self.static.maximum[e], self.maximum[e], "C3"),
-            ("minimum", self.static.minimum[e], self.minimum[e], "C0"),
-        ):
-            ax.plot(x, display.value(dynamic, quantity), color=color, lw=1.3,
-                    label=f"dynamic {bound}")  # fmt: skip
-            ax.plot(x, display.value(static, quantity), "--", color=color, lw=0.9,
-                    label=f"static {bound}")  # fmt: skip
-        for s in self.supports:
-            ax.axvline(display.value(s, "length"), color="0.6", lw=0.6)
-        ax.axhline(0.0, color="k", lw=0.6)
-        ax.set_xlabel(display.label("station from the first support", "length"))
-        ax.set_ylabel(display.label(effect, quantity))
-        ax.legend(loc="best", fontsize="x-small", ncol=2)
-        return ax
-
-
-def _envelopes(inputs: ReportInputs, vehicle: object, runs: _Runs, spacing: float | None,
-               count: int) -> Envelopes:  # fmt: skip
-    system = as_system(vehicle)
-    static = field_envelope(inputs.bridge.spans, inputs.bridge.EI, system.static_loads,
-                            system.offsets, count=count,
-                            direction=inputs.parameters.direction)  # fmt: skip
-    faces = tuple(f or "left" for f in static.faces)
-    maximum = np.full((3, static.sections.size), -np.inf)
-    minimum = np.full((3, static.sections.size), np.inf)
-    keys = [k for k in runs.crossings if k[1] == spacing]
-    valid = [k for k in keys if not runs.crossings[k].lost_contact] or keys
-    for key in valid:
-        direction = key[0]
-        crossing = runs.crossings[key]
-        x = inputs.to_run(static.sections, direction)
-        side = faces if direction == "forward" else tuple(_flip(f) for f in faces)
-        response = crossing.sections(x, side=side)
-        high, low = response.maximum.copy(), response.minimum.copy()
-        if direction == "backward":
-            high[2], low[2] = -response.minimum[2], -response.maximum[2]
-        maximum = np.maximum(maximum, high)
-        minimum = np.minimum(minimum, low)
-    return Envelopes(static, maximum, minimum, inputs.bridge.supports, vehicle_label(vehicle))
-
-
-# ---------------------------------------------------------------------------- flights
-@dataclass(frozen=True, eq=False)
-class Flights:
-    """Every flight of a tyre in the requested crossings (forward stations), and the
-    tyres' footprint."""
-
-    table: pd.DataFrame
-    footprint: tuple[float, ...]
-    unilateral: bool
-
-    def to_dataframe(self) -> pd.DataFrame:
-        """One row per flight: direction, speed, axle, take-off and landing station [m] from
-        the first support, duration [s]."""
-        return self.table.copy()
-
-    def plot(self, ax: Axes | None = None) -> Axes:
-        """Where the tyres flew: a bar from take-off to landing station, one row per flight."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 2.0))
-        for k, row in enumerate(self.table.itertuples()):
-            start = display.value(min(row.take_off_m, row.landing_m), "length")
-            size = display.value(abs(row.landing_m - row.take_off_m), "length")
-            ax.barh(k, size, left=start, color="C3")
-        ax.set_xlabel(display.label("station from the first support", "length"))
-        ax.set_yticks([])
-        return ax
-
-
-def _flights(inputs: ReportInputs, runs: _Runs) -> Flights:
-    rows = []
-    length = inputs.bridge.length
-    for (direction, spacing, speed), crossing in runs.crossings.items():
-        start = crossing.bridge_start
-        for row in crossing.flights().itertuples(index=False):
-            take_off, landing = row[3] - start, row[4] - start
-            if direction == "backward":
-                take_off, landing = length - take_off, length - landing
-            rows.append({
-                "direction": direction,
-                "speed_m_s": float(speed),
-                "rear_axle_spacing_m": spacing,
-                "axle": int(row[0]),
-                "take_off_m": float(take_off),
-                "landing_m": float(landing),
-                "duration_s": float(row[5]),
-                "on_bridge": bool(-1e-9 <= take_off <= length + 1e-9),
-            })  # fmt: skip
-    columns = ["direction", "speed_m_s", "rear_axle_spacing_m", "axle", "take_off_m",
-               "landing_m", "duration_s", "on_bridge"]  # fmt: skip
-    system = as_system(inputs.vehicle)
-    return Flights(
-        pd.DataFrame(rows, columns=columns),
-        tuple(float(f) for f in system.footprint),
-        bool(system.has_unilateral),
-    )
-
-
-# ---------------------------------------------------------------------------- study's spans
-@dataclass(frozen=True, eq=False)
-class SpeedStudy:
-    """The study's span DAF at each speed, coupled and decoupled, with the contact checks.
-
-    ``coupled`` and ``decoupled`` are :class:`~vbi_lib.BatchResult` rows in the order of
-    ``speeds`` [m/s]; ``n_spans`` columns of their ``daf`` are used.
-    """
-
-    speeds: np.ndarray
-    coupled: BatchResult
-    decoupled: BatchResult
-    n_spans: int
-
-    @property
-    def lost_contact(self) -> np.ndarray:
-        """Whether the coupled crossing at each speed lost contact (outside validity)."""
-        return self.coupled.lost_contact
-
-    def largest(self, span: int) -> tuple[float, float] | None:
-        """Largest valid coupled DAF of ``span`` (0-based) and its speed, ``None`` if none."""
-        valid = ~self.lost_contact
-        if not valid.any():
-            return None
-        daf = np.where(valid, self.coupled.daf[:, span], -np.inf)
-        best = int(np.argmax(daf))
-        return float(daf[best]), float(self.speeds[best])
-
-    def to_dataframe(self) -> pd.DataFrame:
-        """One row per speed: DAF per span (coupled, decoupled) and the contact checks."""
-        columns: dict[str, object] = {
-            display.label("speed", "speed"): display.value(self.speeds, "speed")
-        }
-        for j in range(self.n_spans):
-            columns[f"DAF span {j + 1}"] = self.coupled.daf[:, j]
-            columns[f"DAF span {j + 1}, decoupled"] = self.decoupled.daf[:, j]
-        columns["largest contact force / weight"] = self.coupled.contact_force_amplification
-        columns["smallest contact force / weight"] = self.coupled.min_contact_force_ratio
-        columns["contact lost"] = self.lost_contact
-        return pd.DataFrame(columns)
-
-    def plot(self, ax: Axes | None = None, allowance: float | None = None) -> Axes:
-        """DAF against speed: coupled (solid), decoupled (dashed), lost contact crossed out."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 3.4))
-        v = display.value(self.speeds, "speed")
-        lost = self.lost_contact
-        for j in range(self.n_spans):
-            coupled = self.coupled.daf[:, j]
-            (line,) = ax.plot(v, np.where(lost, np.nan, coupled), label=f"span {j + 1}, coupled")
-            ax.plot(v, self.decoupled.daf[:, j], "--", color=line.get_color(), lw=1,
-                    label=f"span {j + 1}, decoupled (bound)")  # fmt: skip
-            ax.plot(v[lost], coupled[lost], "x", color=line.get_color(), ms=6)
-        if lost.any():
-            ax.plot([], [], "x", color="k", label="contact lost: outside validity")
-        if allowance is not None:
-            ax.axhline(allowance, color="k", lw=1, ls=":", label="AASHTO LRFD (1 + IM)")
-        ax.set_xlabel(display.label("speed", "speed"))
-        ax.set_ylabel("DAF [-]")
-        ax.legend(loc="best", fontsize="small")
-        return ax
-
-
-def speed_study(inputs: ReportInputs, speeds: np.ndarray) -> SpeedStudy:
-    """The study's coupled and decoupled crossings of ``inputs.road`` at ``speeds`` [m/s]
-    (its span DAF; the report's own case only: its sprung mass on its beam)."""
-    speeds = np.asarray(speeds, dtype=float)
-    roads = [inputs.run("forward", speed).road for speed in speeds]
-    args = (inputs.bridge, inputs.vehicle, roads, list(speeds), inputs.bridge_start)
-    coupled, _ = _quiet(simulate_many, *args)
-    decoupled, _ = _quiet(simulate_many, *args, coupled=False)
-    return SpeedStudy(speeds, coupled, decoupled, inputs.bridge.n_spans)
-
-
-# ---------------------------------------------------------------------------- position
-def shifted_deck(deck: Profile, offset: float) -> Profile:
-    """The deck's roughness moved ``offset`` [m] along the bridge, wrapping round its ends.
-
-    The straight line through the deck's end elevations is kept; the rest (zero at both ends)
-    is read at ``(x - offset) mod L``, so the shifted deck has the same roughness, no step,
-    and its features lie ``offset`` further on.
-
-    >>> deck = Profile(np.array([0.0, 1.0, 2.0, 3.0, 4.0]), np.array([0.0, 1.0, 0.0, 0.0, 0.0]))
-    >>> shifted_deck(deck, 1.0).elevation.tolist()
-    [0.0, 0.0, 1.0, 0.0, 0.0]
-    """
-    x, z = deck.x, deck.elevation
-    length = x[-1] - x[0]
-    trend = z[0] + (z[-1] - z[0]) * (x - x[0]) / length
-    rest = z - trend
-    moved = np.interp(np.mod(x - x[0] - offset, length) + x[0], x, rest)
-    return Profile(x, trend + moved, name=deck.name)
-
-
-@dataclass(frozen=True, eq=False)
-class PositionStudy:
-    """Largest span DAF with the deck's roughness moved along the bridge (forward).
-
-    ``daf`` and ``lost`` are ``(n_speeds, n_offsets)``: for each requested speed and each
-    ``offset`` [m], the largest DAF of the spans (the midspan displacement's, of
-    :func:`vbi_lib.simulate`) and whether that crossing lost contact.
-    """
-
-    speeds: np.ndarray
-    offsets: np.ndarray
-    daf: np.ndarray
-    lost: np.ndarray
-
-    def to_dataframe(self) -> pd.DataFrame:
-        """One row per speed: the smallest, median and largest valid DAF over the offsets."""
-        rows = []
-        for i, speed in enumerate(self.speeds):
-            valid = self.daf[i][~self.lost[i] & np.isfinite(self.daf[i])]
-            rows.append({
-                display.label("speed", "speed"): display.value(speed, "speed"),
-                "smallest DAF": valid.min() if valid.size else np.nan,
-                "median DAF": np.median(valid) if valid.size else np.nan,
-                "largest DAF": valid.max() if valid.size else np.nan,
-                "positions that lost contact": int(self.lost[i].sum()),
-                "positions": self.offsets.size,
-            })  # fmt: skip
-        return pd.DataFrame(rows)
-
-    def plot(self, ax: Axes | None = None) -> Axes:
-        """Largest DAF of the spans against the offset, one line per speed."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 3.4))
-        x = display.value(self.offsets, "length")
-        for i, speed in enumerate(self.speeds):
-            label = f"{display.value(speed, 'speed'):.0f} {display.symbol('speed')}"
-            (line,) = ax.plot(x, np.where(self.lost[i], np.nan, self.daf[i]), "o-", ms=3,
-                              label=label)  # fmt: skip
-            ax.plot(x[self.lost[i]], self.daf[i][self.lost[i]], "x", color=line.get_color())
-        if self.lost.any():
-            ax.plot([], [], "x", color="k", label="contact lost: outside validity")
-        ax.set_xlabel(display.label("deck roughness moved along the bridge by", "length"))
-        ax.set_ylabel("largest DAF of the spans [-]")
-        ax.legend(loc="best", fontsize="small")
-        return ax
-
-
-def _started(inputs: ReportInputs, road: Profile, speed: float) -> Profile:
-    """``road`` from where a crossing at ``speed`` starts (:meth:`ReportInputs.approach_at`)."""
-    start = inputs.bridge_start - inputs.approach_at(speed)
-    return road.segment(start, road.x[-1]) if start > road.x[0] + 1e-9 else road
-
-
-def position_study(
-    inputs: ReportInputs, count: int, vehicle: object | None = None
-) -> PositionStudy:
-    """DAF at the requested speeds with the deck moved by ``count`` even steps over its length."""
-    deck = inputs.deck
-    vehicle = inputs.vehicle if vehicle is None else vehicle
-    offsets = np.arange(count) * deck.length / count
-    roads = [inputs.with_deck(shifted_deck(deck, offset)) for offset in offsets]
-    speeds = np.asarray(inputs.speeds, dtype=float)
-    every_road = [_started(inputs, road, speed) for speed in speeds for road in roads]
-    every_speed = [speed for speed in speeds for _ in roads]
-    options = {"model": inputs.model}
-    if inputs.modes is not None:
-        options["modes"] = inputs.modes
-    result, _ = _quiet(simulate_many, inputs.bridge, vehicle, every_road, every_speed,
-                       inputs.bridge_start, **options)  # fmt: skip
-    n = inputs.bridge.n_spans
-    daf = np.nanmax(result.daf[:, :n], axis=1).reshape(speeds.size, count)
-    return PositionStudy(speeds, offsets, daf, result.lost_contact.reshape(speeds.size, count))
-
-
-# ---------------------------------------------------------------------------- the road
-@dataclass(frozen=True, eq=False)
-class SpanRoughness:
-    """IRI and ISO 8608 parameters of each span's deck profile (and of the whole deck).
-
-    ``names`` label the rows (``"span 1"``, ..., ``"whole deck"``); ``iri`` [m/km], ``c10``
-    [m^3] and ``waviness`` are NaN where they could not be computed (``reasons`` says why).
-    """
-
-    names: tuple[str, ...]
-    iri: np.ndarray
-    c10: np.ndarray
-    waviness: np.ndarray
-    reasons: tuple[str, ...]
-    deck: Profile
-    approach_end: float
-
-    @property
-    def iso_class(self) -> tuple[str, ...]:
-        """ISO 8608 class of each row's fitted C10 (``"-"`` where not fitted)."""
-        return tuple(iso8608_class(c) if np.isfinite(c) else "-" for c in self.c10)
-
-    def to_dataframe(self) -> pd.DataFrame:
-        """One row per span (and the whole deck): IRI, C10, waviness, ISO class."""
-        return pd.DataFrame(
-            {
-                display.label("IRI", "roughness"): display.value(self.iri, "roughness"),
-                "C10 [1e-6 m^3]": self.c10 * 1e6,
-                "waviness [-]": self.waviness,
-                "ISO 8608 class": self.iso_class,
-            },
-            index=pd.Index(self.names, name="part"),
-        )
-
-    def plot(self, ax: Axes | None = None, road: Profile | None = None) -> Axes:
-        """The deck profile (and the end of the approach), elevation against station."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 2.8))
-        if road is not None:
-            x = np.linspace(-0.25 * self.deck.length, 0.0, 200)
-            z = road.elevation_at(x + self.approach_end)
-            ax.plot(display.value(x, "length"), display.value(z, "elevation"), color="0.55",
-                    lw=0.8, label="approach")  # fmt: skip
-        ax.plot(display.value(self.deck.x, "length"),
-                display.value(self.deck.elevation, "elevation"), lw=0.8, label="deck")  # fmt: skip
-        ax.axvspan(0, display.value(self.deck.x[-1], "length"), color="0.94", zorder=0)
-        ax.set_xlabel(display.label("station from the bridge's first support", "length"))
-        ax.set_ylabel(display.label("elevation", "elevation"))
-        ax.legend(loc="best", fontsize="small")
-        return ax
-
-
-def span_roughness(inputs: ReportInputs) -> SpanRoughness:
-    """IRI (ASTM E1926) and the ISO 8608 fit of each span's deck and of the whole deck."""
-    deck = inputs.deck
-    supports = inputs.bridge.supports
-    n = inputs.bridge.n_spans
-    parts = [
-        (f"span {j + 1}", deck.segment(supports[j], min(supports[j + 1], deck.end)))
-        for j in range(n)
-    ]
-    if n > 1:
-        parts.append(("whole deck", deck))
-    values = np.full((len(parts), 3), np.nan)
-    reasons = []
-    for i, (_, part) in enumerate(parts):
-        why = []
-        try:
-            values[i, 0] = iri(part).iri
-        except ValueError as error:
-            why.append(f"IRI not computed: {error}")
-        try:
-            values[i, 1:] = fit_iso8608(part)
-        except ValueError as error:
-            why.append(f"ISO 8608 fit not computed: {error}")
-        reasons.append("; ".join(why))
-    return SpanRoughness(
-        names=tuple(name for name, _ in parts),
-        iri=values[:, 0],
-        c10=values[:, 1],
-        waviness=values[:, 2],
-        reasons=tuple(reasons),
-        deck=deck,
-        approach_end=inputs.bridge_start,
-    )
-
-
-# ---------------------------------------------------------------------------- design codes
-@dataclass(frozen=True)
-class Allowances:
-    """Design DAF ``1 + IM`` of the codes for this bridge, by code (see :mod:`amplification`).
-
-    ``daf`` are the bridge-wide values (the AASHTO Standard's at the longest span);
-    ``by_column`` the values of each place and effect (the AASHTO Standard's loaded length
-    depends on them, 3.8.2.2).
-    """
-
-    daf: dict[str, float]
-    #: AASHTO LRFD Table 3.6.2.1-1, all limit states but fatigue and deck joints.
-    aashto_lrfd: float
-    #: AASHTO LRFD Table 3.6.2.1-1, fatigue and fracture.
-    aashto_fatigue: float = 1.15
-    by_column: tuple[dict[str, float], ...] = ()
-
-    def to_dataframe(self) -> pd.DataFrame:
-        """One row per code: its design DAF."""
-        return pd.DataFrame({"design DAF (1 + IM)": self.daf}).rename_axis("code")
-
-    def plot(self, ax: Axes | None = None) -> Axes:
-        """Horizontal bars of the design DAFs."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(6, 2))
-        ax.barh(list(self.daf), list(self.daf.values()), color="0.6")
-        ax.set_xlabel("design DAF (1 + IM) [-]")
-        return ax
-
-
-def loaded_length(bridge: Bridge, column: Column) -> float:
-    """The AASHTO Standard's loaded length of a place and effect [m] (3.8.2.2): the span for
-    a displacement or a moment in a span, the mean of the two spans at an interior support
-    (negative moment), for the shear the longer part of the span on its face's side."""
-    spans, supports = bridge.spans, bridge.supports
-    place = column.place
-    if place.interior_support:
-        left, right = spans[place.support - 1], spans[place.support]
-        if column.effect == "moment":
-            return 0.5 * (left + right)
-        return left if column.face == "left" else right
-    if place.support is not None:
-        return spans[0] if place.support == 0 else spans[-1]
-    j = place.span
-    if column.effect == "shear":
-        s = place.x - supports[j]
-        return max(s, spans[j] - s)
-    return spans[j]
-
-
-def allowances(bridge: Bridge, cols: tuple[Column, ...] = ()) -> Allowances:
-    """AASHTO LRFD (33 %, 15 % for fatigue), AASHTO Standard (loaded length in feet) and
-    OHBDC 1983 (first frequency)."""
-    lrfd = amp.aashto_lrfd_allowance()
-    fatigue = amp.aashto_lrfd_allowance("fatigue and fracture")
-    ohbdc = 1.0 + float(amp.ohbdc_1983_allowance(bridge.first_frequency_hz))
-    by_column = []
-    for col in cols:
-        length = loaded_length(bridge, col)
-        by_column.append({
-            "AASHTO LRFD": 1.0 + lrfd,
-            "AASHTO LRFD fatigue": 1.0 + fatigue,
-            "AASHTO Standard": 1.0 + float(amp.aashto_standard_impact(length)),
-            "OHBDC 1983": ohbdc,
-            "loaded length [m]": length,
-        })  # fmt: skip
-    return Allowances(
-        aashto_lrfd=1.0 + lrfd,
-        aashto_fatigue=1.0 + fatigue,
-        daf={
-            f"AASHTO LRFD, Table 3.6.2.1-1 (IM {lrfd:.0%})": 1.0 + lrfd,
-            f"AASHTO LRFD, fatigue and fracture (IM {fatigue:.0%})": 1.0 + fatigue,
-            f"AASHTO Standard, 50 / (L + 125) <= 0.30, at L = {bridge.span / ft:.0f} ft": 1.0
-            + float(amp.aashto_standard_impact(bridge.span)),
-            f"OHBDC 1983, at f1 = {bridge.first_frequency_hz:.2f} Hz": ohbdc,
-        },
-        by_column=tuple(by_column),
-    )
-
-
 # ---------------------------------------------------------------------------- everything
 @dataclass(frozen=True, eq=False)
 class ReportAnalysis:
@@ -925,7 +374,7 @@ def analyse(inputs: ReportInputs, quick: bool | None = None) -> ReportAnalysis:
     """
     quick = inputs.parameters.quick if quick is None else bool(quick)
     cols = columns(inputs)
-    entries = _entries(cols)
+    entries = station_entries(cols)
     spacing_of, search = _spacings(inputs, cols)
     vehicles = {s: inputs.vehicles.get(s) or vehicle_at(inputs.parameters, s)
                 for s in dict.fromkeys(spacing_of)}  # fmt: skip
@@ -958,7 +407,8 @@ def analyse(inputs: ReportInputs, quick: bool | None = None) -> ReportAnalysis:
                 daf[d, s, c] = _values(response, direction, e, i)[0]
     sweep = Sweep(speeds, inputs.directions, cols, daf, lost, flight,
                   vehicle_label(vehicles[main]))  # fmt: skip
-    envelopes = _envelopes(inputs, vehicles[main], runs, main, FIELD_COUNTS[1 if quick else 0])
+    along = envelopes(inputs, vehicles[main], runs.crossings, main,
+                      FIELD_COUNTS[1 if quick else 0])  # fmt: skip
     # the worst valid requested crossing
     valid = study.rows[study.rows.valid & study.rows.daf.notna()]
     pool = valid if not valid.empty else study.rows[study.rows.daf.notna()]
@@ -973,8 +423,8 @@ def analyse(inputs: ReportInputs, quick: bool | None = None) -> ReportAnalysis:
         inputs=inputs,
         sections=study,
         sweep=sweep,
-        envelopes=envelopes,
-        flights=_flights(inputs, runs),
+        envelopes=along,
+        flights=flights(inputs, runs.crossings),
         position=position,
         roughness=span_roughness(inputs),
         allowances=allowances(inputs.bridge, cols),
@@ -994,16 +444,15 @@ def warm_up() -> None:
     A fresh process loads numba's cached machine code on first call (about two seconds);
     the report runner has its kernel call this first, while it prepares the rest.
     """
-    from ..bridges import Bridge
     from ..vehicles import Vehicle
     from ..vehicles.fleet import hs20
 
     road = Profile.flat(50.0, 0.1)
     one = Bridge(10.0, 1, 2e9, 5000.0)
     truck = Vehicle.from_frequency(2e4, 3.0, 0.1)
-    _quiet(simulate, one, truck, road, 14.0, 12.0)[0].sections([5.0])
-    _quiet(simulate_many, one, truck, [road, road], [14.0, 15.0], 12.0)
+    quiet(simulate, one, truck, road, 14.0, 12.0)[0].sections([5.0])
+    quiet(simulate_many, one, truck, [road, road], [14.0, 15.0], 12.0)
     two = Bridge.continuous([10.0, 12.0], EI=2e9, mass_per_length=5000.0)
-    run, _ = _quiet(simulate, two, hs20(), road, 14.0, 12.0, model="modal", modes=2)
+    run, _ = quiet(simulate, two, hs20(), road, 14.0, 12.0, model="modal", modes=2)
     run.sections([5.0, 10.0, 10.0], side=("left", "left", "right"))
     field_envelope(two.spans, two.EI, [1.0, 2.0], [0.0, 3.0], count=11)

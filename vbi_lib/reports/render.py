@@ -6,28 +6,23 @@ in full), never ``30.000000``.  Everything the user wrote (title, file names, pa
 passes through :func:`html.escape` before it reaches the page.
 
 Each section of the report is one block (:func:`block`): its heading, its text, its tables
-and its figures (inline SVG, scaled to the page's width) in one ``<section>`` that a printed
-page does not split from its heading; wide tables are cut into parts that fit the page.
+and its figures (:mod:`.figures`: inline SVG, scaled to the page's width) in one
+``<section>`` whose heading a printed page keeps with what follows; wide tables are cut into
+parts that fit the page.  Here: the title, the summary, the DAF tables, the tyres' flights;
+the inputs, the road, the limits and the provenance are :mod:`.appendix`'s.
 """
 
 from __future__ import annotations
 
 import datetime as _dt
 import html
-import io
 import math
-import platform
-import re
 from collections.abc import Iterable, Sequence
 
 import numpy as np
-import yaml
 
 from .. import display
 from ..beam_statics import QUANTITY
-from ..bridges import shape_function_error
-from ..profiles import max_sample_spacing
-from ..roughness import IN_PER_MI
 from ..units import ft
 from ..vehicles import as_system
 from .analysis import ReportAnalysis
@@ -36,26 +31,16 @@ from .inputs import ReportInputs
 __all__ = [
     "block",
     "daf_html",
-    "envelopes_figure",
-    "figure_html",
     "flights_html",
-    "inputs_html",
-    "limits_html",
-    "notes_html",
     "number",
     "position_html",
-    "provenance_html",
     "quantity",
-    "road_html",
     "sections_html",
     "summary_html",
-    "sweep_figure",
     "title_html",
     "use_units",
 ]
 
-#: Highest bridge frequency the road's sampling must resolve, at least (study rule 32).
-MIN_RESOLVED_HZ = 15.0
 #: Most speed columns in one table (wider tables are cut into parts).
 SPEEDS_PER_TABLE = 6
 
@@ -131,19 +116,6 @@ def block(heading: str, *parts: str, css: str = "") -> str:
 
 def _p(text: str, css: str = "") -> str:
     return f'<p class="{css}">{_e(text)}</p>' if css else f"<p>{_e(text)}</p>"
-
-
-def figure_html(fig: object, caption: str = "") -> str:
-    """A matplotlib figure as inline SVG, scaled to the page's width (the figure is closed)."""
-    import matplotlib.pyplot as plt
-
-    buffer = io.StringIO()
-    fig.savefig(buffer, format="svg", bbox_inches="tight", metadata={"Date": None})
-    plt.close(fig)
-    svg = buffer.getvalue()
-    svg = re.sub(r"<metadata>.*?</metadata>", "", svg[svg.index("<svg") :], flags=re.DOTALL)
-    note = f'<figcaption class="vbi-caption">{_e(caption)}</figcaption>' if caption else ""
-    return f'<figure class="vbi-figure">{svg}{note}</figure>'
 
 
 def _speed(speed: float) -> str:
@@ -304,147 +276,6 @@ def summary_html(analysis: ReportAnalysis) -> str:
     )
 
 
-# ---------------------------------------------------------------------------- inputs
-_LABELS = {
-    "bridge.span": "span",
-    "bridge.spans": "spans",
-    "bridge.k_mid": "midspan stiffness of the path",
-    "bridge.EI": "flexural rigidity EI",
-    "bridge.mass_per_length": "mass per length",
-    "bridge.first_frequency": "first natural frequency",
-    "bridge.damping_ratio": "bridge damping ratio",
-    "vehicle.mass": "vehicle mass",
-    "vehicle.unsprung_mass": "unsprung mass",
-    "vehicle.frequency": "body-bounce frequency",
-    "vehicle.tyre_stiffness": "tyre stiffness",
-    "vehicle.damping_ratio": "suspension damping ratio",
-    "vehicle.footprint": "tyre footprint",
-    "vehicle.rear_axle_spacing": "rear axle spacing",
-    "profile.bridge_start": "first support, from the file's first point",
-    "profile.approach_length": "approach length",
-    "profile.spacing": "generated road's sample spacing",
-}
-
-
-def _label(key: str) -> str:
-    base = key.split("[", 1)[0]
-    label = _LABELS.get(base, base)
-    return label + (f" [{key.split('[', 1)[1]}" if "[" in key else "")
-
-
-def inputs_html(inputs: ReportInputs) -> str:
-    """The inputs as given, then the model built from them."""
-    p = inputs.parameters
-    rows = [["spans", str(p.bridge.n_spans)], ["vehicle type", p.vehicle.type]]
-    for key, text in p.given.items():
-        if key.startswith(("speeds", "sections")):
-            continue
-        rows.append([_label(key), text])
-    rows.append(["speeds", ", ".join(p.given[f"speeds[{i}]"] for i in range(len(p.speeds)))])
-    if p.sections is not None:
-        rows.append(["sections", ", ".join(p.given[f"sections[{i}]"]
-                                           for i in range(len(p.sections)))])  # fmt: skip
-    rows.append(["effects", ", ".join(inputs.effects)])
-    rows.append(["direction", p.direction])
-    if p.vehicle.type == "sprung-mass":
-        rows.append(["vehicle frequency is", "damped" if p.vehicle.damped else "undamped"])
-    rows.append(["road", inputs.profile_source])
-    given = _table(["input", "as given"], rows, "vbi-inputs")
-    b = inputs.bridge
-    spans = " + ".join(quantity(s, "length") for s in b.spans)
-    model = [
-        ["spans", spans],
-        ["first natural frequency", f"{number(b.first_frequency_hz)} Hz"],
-        ["flexural rigidity EI", quantity(b.EI, "flexural_rigidity")],
-        ["mass per length", quantity(b.mass_per_length, "mass_per_length")],
-        ["bridge damping", f"{number(b.damping_ratio * 100)} % of critical, every mode"],
-    ]
-    if inputs.model == "one-coordinate":
-        model += [
-            ["model", "the study's beam of one generalised coordinate (equations 33-45)"],
-            ["generalised mass m*", quantity(b.generalized_mass, "mass")],
-            ["generalised stiffness k*", quantity(b.generalized_stiffness, "stiffness")],
-        ]
-    else:
-        from ..modes import beam_modes
-
-        frequencies = beam_modes(b, inputs.modes).frequencies_hz
-        shown = ", ".join(number(f) for f in frequencies[:8]) + (
-            ", ..." if inputs.modes > 8 else ""
-        )
-        model.append(["model", f"{inputs.modes} exact Euler-Bernoulli modes of the continuous "
-                      f"beam ({shown} Hz), Newmark average acceleration"])  # fmt: skip
-    system = as_system(inputs.vehicle)
-    model += [
-        ["vehicle", system.name or p.vehicle.type],
-        ["vehicle weight", quantity(system.weight, "weight")],
-        ["vehicle frequencies on a rigid road",
-         ", ".join(number(f) for f in system.frequencies_hz) + " Hz"],
-    ]  # fmt: skip
-    axles = ""
-    if system.n_axles > 1:
-        axle_rows = [
-            [str(a + 1), quantity(system.offsets[a], "length"),
-             quantity(system.static_loads[a], "weight"),
-             "tyre (can leave the road)" if system.unilateral[a] else "bilateral"]
-            for a in range(system.n_axles)
-        ]  # fmt: skip
-        axles = _table(["axle", "behind the first", "static load", "contact"], axle_rows,
-                       "vbi-axles")  # fmt: skip
-    elif isinstance(inputs.vehicle, object) and p.vehicle.type == "sprung-mass":
-        t = inputs.vehicle
-        model += [
-            ["suspension stiffness", quantity(t.stiffness, "stiffness")],
-            ["suspension damping", quantity(t.damping, "damping")],
-            ["static midspan deflection under the weight",
-             quantity(b.static_deflection(t.weight), "deflection")],
-        ]  # fmt: skip
-    return block(
-        "Inputs",
-        _p("The values as given, and the model built from them."),
-        given,
-        '<p class="vbi-caption">The model:</p>',
-        _table(["property", "value"], model, "vbi-model"),
-        axles,
-    )
-
-
-# ---------------------------------------------------------------------------- road
-def road_html(analysis: ReportAnalysis, road_figure: str = "") -> str:
-    """IRI and ISO 8608 class of each span, and the deck profile's figure."""
-    r = analysis.roughness
-    rows = [
-        [name, number(iri), number(iri * IN_PER_MI), number(c10 * 1e6), number(w), cls]
-        for name, iri, c10, w, cls in zip(
-            r.names, r.iri, r.c10, r.waviness, r.iso_class, strict=True
-        )
-    ]
-    notes = "".join(
-        f"<li>{_e(name)}: {_e(why)}</li>"
-        for name, why in zip(r.names, r.reasons, strict=True)
-        if why
-    )
-    text = (
-        "The deck profile and the end of the approach before it. The International Roughness "
-        "Index (IRI, ASTM E1926: the golden quarter car at 80 km/h) and the ISO 8608 "
-        "parameters (C10, the displacement spectral density at 0.1 cycle/m, and the "
-        "waviness, fitted to 1/3-octave band averages of the Welch spectrum) are given span "
-        "by span. One span is a short road for a spectrum: read the ISO 8608 class as an "
-        "indication, the IRI as the better measure."
-    )
-    return block(
-        "The road",
-        _p(text),
-        _table(
-            ["part", "IRI [m/km]", "IRI [in/mi]", "C10 [1e-6 m³]", "waviness", "ISO 8608 class"],
-            rows,
-            "vbi-roughness",
-        ),
-        f"<ul>{notes}</ul>" if notes else "",
-        road_figure,
-    )
-
-
 # ---------------------------------------------------------------------------- DAF tables
 def _chunks(items: Sequence, size: int) -> list:
     return [items[i : i + size] for i in range(0, len(items), size)] or [items]
@@ -552,129 +383,6 @@ def daf_html(analysis: ReportAnalysis) -> str:
     return block("The study's span DAF", _p(text), _table(header, rows, "vbi-daf"), codes_table)
 
 
-# ---------------------------------------------------------------------------- figures
-def sweep_figure(analysis: ReportAnalysis) -> str:
-    """DAF against speed, one panel per effect."""
-    import matplotlib.pyplot as plt
-
-    effects = list(analysis.inputs.effects)
-    fig, axes = plt.subplots(len(effects), 1, figsize=(7.2, 2.5 * len(effects)), sharex=True)
-    axes = np.atleast_1d(axes)
-    for ax, effect in zip(axes, effects, strict=True):
-        analysis.sweep.plot(ax, effect=effect, allowance=analysis.allowances.aashto_lrfd)
-        if ax is not axes[-1]:
-            ax.set_xlabel("")
-    fig.tight_layout()
-    text = (
-        "One crossing's DAF depends strongly on speed: the sweep runs from half the slowest to "
-        f"1.2 times the fastest requested speed with {analysis.sweep.vehicle}. Solid lines "
-        "forward, dashed backward; the dotted line is AASHTO LRFD's 1 + IM; crosses mark "
-        "crossings whose contact became tensile (outside validity)."
-    )
-    return block("DAF against speed", _p(text), figure_html(fig), css="vbi-keep")
-
-
-def envelopes_figure(analysis: ReportAnalysis) -> str:
-    """Static and dynamic envelopes along the bridge, one panel per effect."""
-    import matplotlib.pyplot as plt
-
-    effects = list(analysis.inputs.effects)
-    fig, axes = plt.subplots(len(effects), 1, figsize=(7.2, 2.3 * len(effects)), sharex=True)
-    axes = np.atleast_1d(axes)
-    for ax, effect in zip(axes, effects, strict=True):
-        analysis.envelopes.plot(ax, effect=effect)
-        if ax is not axes[-1]:
-            ax.set_xlabel("")
-    fig.tight_layout()
-    text = (
-        "The largest and smallest value of each effect at every station along the bridge: "
-        "static (dashed: the axles crawling across, every position, the directions asked) and "
-        f"dynamic (solid: over the requested crossings of {analysis.envelopes.vehicle}). The "
-        "shear is drawn on both faces of each interior support, so it jumps there by the "
-        "reaction."
-    )
-    return block("Envelopes along the bridge", _p(text), figure_html(fig), css="vbi-keep")
-
-
-def _decimated(x: np.ndarray, y: np.ndarray, count: int = 1200) -> tuple[np.ndarray, np.ndarray]:
-    """``(x, y)`` cut to about ``2 count`` points for a plot, keeping each bucket's smallest
-    and largest value in order (so every peak is drawn)."""
-    if x.size <= 2 * count:
-        return x, y
-    edges = np.linspace(0, x.size, count + 1).astype(int)
-    keep = []
-    for lo, hi in zip(edges[:-1], edges[1:], strict=True):
-        part = y[lo:hi]
-        keep += sorted({lo + int(np.argmin(part)), lo + int(np.argmax(part))})
-    keep = np.array(keep)
-    return x[keep], y[keep]
-
-
-def worst_figure(analysis: ReportAnalysis) -> str:
-    """The worst requested crossing's midspan displacements and contact forces."""
-    import matplotlib.pyplot as plt
-
-    crossing = analysis.worst
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.2, 4.4), sharex=True)
-    x = display.value(crossing.position - crossing.bridge_start, "length")
-    for j in range(crossing.bridge.n_spans):
-        y = crossing.midspan_displacement[:, j] / crossing.static_deflection
-        top.plot(*_decimated(x, y), lw=1, label=f"span {j + 1}")
-    system = as_system(crossing.vehicle)
-    ratios = crossing.axle_contact_force / system.static_loads[None, :]
-    for a in range(system.n_axles):
-        label = f"axle {a + 1}" if system.n_axles > 1 else None
-        bottom.plot(*_decimated(x, ratios[:, a]), lw=1, label=label)
-    bottom.axhline(0.0, color="k", lw=0.8)
-    for ax in (top, bottom):
-        ax.axvspan(0, display.value(crossing.bridge.length, "length"), color="0.93", zorder=0)
-        if len(ax.get_lines()) > 2:
-            ax.legend(loc="best", fontsize="x-small")
-    top.set_xlim(*worst_window(analysis))
-    top.set_ylabel("displacement / static [-]")
-    bottom.set_ylabel("contact force / load [-]")
-    bottom.set_xlabel(display.label("first axle from the start of the bridge", "length"))
-    top.set_title(worst_title(analysis), fontsize="small")
-    fig.tight_layout()
-    direction, _, _ = analysis.worst_key
-    seen = "as the vehicle sees it, from the far support" if direction == "backward" else "forward"
-    text = (
-        "The crossing with the largest valid DAF: each span's midspan displacement over the "
-        "static deflection the crossing divides by, and each axle's contact force over its "
-        "static load, against the first axle's position from the bridge's first support "
-        f"({seen}). Where a contact force reaches zero a tyre leaves the road; below zero a "
-        "bilateral contact would pull on it."
-    )
-    return block("The worst requested crossing", _p(text), figure_html(fig), css="vbi-keep")
-
-
-def road_figure(analysis: ReportAnalysis) -> str:
-    """The deck profile and the end of the approach, as a figure (no heading)."""
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(7.2, 2.4))
-    analysis.roughness.plot(ax, road=analysis.inputs.road)
-    fig.tight_layout()
-    return figure_html(fig)
-
-
-def position_figure(analysis: ReportAnalysis) -> str:
-    """The position study: its table and figure."""
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(7.2, 2.8))
-    analysis.position.plot(ax)
-    fig.tight_layout()
-    text = (
-        "Where the deck's bumps lie relative to midspan matters as much as how large they are. "
-        "Here the deck's roughness is moved along the bridge in even steps (wrapping round its "
-        "ends, so the same roughness stays on the bridge) and each requested speed is run "
-        "again, forward; the DAF shown is the largest of the spans' midspan displacement DAFs."
-    )
-    return block("Sensitivity to the profile's position", _p(text), position_html(analysis),
-                 figure_html(fig), css="vbi-keep")  # fmt: skip
-
-
 def position_html(analysis: ReportAnalysis) -> str:
     """Range of the DAF over the positions of the deck's roughness, per speed."""
     study = analysis.position
@@ -718,158 +426,3 @@ def flights_html(analysis: ReportAnalysis) -> str:
             ["speed", "direction", "axle", "take-off", "landing", "in the air"], rows, "vbi-flights"
         ),  # fmt: skip
     )
-
-
-# ---------------------------------------------------------------------------- limits, provenance
-def limits_html(analysis: ReportAnalysis) -> str:
-    """The model's limits, for this model and vehicle, then this case's notes."""
-    inputs = analysis.inputs
-    if inputs.model == "one-coordinate":
-        bridge = (
-            "The bridge is a uniform beam of one or two equal spans with one generalised "
-            "coordinate (its first mode's shape): its higher modes are left out; the section "
-            "responses add the exact statics to that mode's dynamics (mode acceleration)."
-        )
-    else:
-        bridge = (
-            f"The bridge is a uniform Euler-Bernoulli beam continuous over its spans, pinned at "
-            f"every support, with its first {inputs.modes} exact modes; the section responses "
-            "add the exact statics of the axle forces to the modes' dynamics (mode "
-            "acceleration), so a few modes give moments and shears that converge."
-        )
-    vehicle = {
-        "sprung-mass": "The truck is one sprung mass on one wheel path (the study's model): no "
-        "axle spacing, no tyre, no pitch or roll; its contact is assumed never to leave the "
-        "road, and crossings where it would have are marked and not used as results.",
-        "quarter-car": "The truck is a quarter car: a sprung mass on its suspension, an "
-        "unsprung mass on a tyre that can leave the road; one wheel path, no pitch or roll.",
-    }.get(inputs.parameters.vehicle.type, (
-        "The vehicle's axles each carry a sprung load on a suspension"
-        + (" and an unsprung mass on tyres that can leave the road" if
-           inputs.parameters.vehicle.tyres else "")
-        + "; one wheel path, no roll. The design loads are AASHTO's; their dynamic "
-        "parameters are typical of a loaded heavy truck (vbi_lib.vehicles.hs20), not a code's."
-    ))  # fmt: skip
-    items = [
-        vehicle,
-        bridge,
-        "The DAF of one crossing is one sample: speed, the position of the road's features and "
-        "the vehicle's frequencies all move it, as the sweeps show.",
-    ]
-    if inputs.parameters.vehicle.type in ("hs20", "hl93-truck", "hl93-tandem"):
-        items.append(
-            "AASHTO LRFD's HL-93 adds the design lane load (0.64 kip/ft), which takes no "
-            "dynamic allowance, and for negative moment and interior reactions 90 % of two "
-            "design trucks at least 50 ft apart (3.6.1.3.1): two trucks can be run as "
-            "vehicle.type: axles."
-        )
-    return block(
-        "The model's limits",
-        "<ul>" + "".join(f"<li>{_e(i)}</li>" for i in items) + "</ul>",
-        '<p class="vbi-caption">For this case:</p>',
-        notes_html(analysis),
-    )
-
-
-def notes_html(analysis: ReportAnalysis) -> str:
-    """How the road was assembled and where this case approaches the model's limits."""
-    inputs = analysis.inputs
-    notes = list(inputs.notes)
-    slowest = min(inputs.speeds)
-    resolved = max(MIN_RESOLVED_HZ, 3 * inputs.bridge.first_frequency_hz)
-    s_max = max_sample_spacing(slowest, resolved)
-    spacing = inputs.deck.spacing
-    verdict = "meets" if spacing <= s_max else "does NOT meet"
-    notes.append(
-        f"The deck is sampled every {spacing * 1e3:.1f} mm; rule (32) asks for at most "
-        f"{s_max * 1e3:.0f} mm to resolve {resolved:.0f} Hz at {_speed(slowest)}: the road "
-        f"{verdict} it."
-    )
-    if inputs.model == "one-coordinate" and inputs.bridge.n_spans == 2:
-        notes.append(
-            "Two spans: the model's one shape function gives a midspan deflection "
-            f"{shape_function_error(2):.0%} smaller than the exact beam under a static load; "
-            "its DAF is a ratio of the model's own deflections."
-        )
-    worst = analysis.worst
-    if inputs.model == "one-coordinate":
-        integration = (
-            "Integration: classical fourth-order Runge-Kutta on the study's model, a node at "
-            "every profile sample and support, steps of at most "
-            f"{worst.dt * 1e3:.2f} ms at the worst requested crossing (omega_max dt <= 0.1)."
-        )
-    else:
-        integration = (
-            "Integration: Newmark's average acceleration (unconditionally stable, no numerical "
-            "damping) on the modes and the vehicle, a node at every profile sample and "
-            f"support, steps of at most {worst.dt * 1e3:.2f} ms at the worst requested "
-            "crossing (omega_max dt <= 0.1)."
-        )
-    notes.append(integration)
-    notes += [n for n in analysis.notes if n]
-    items = "".join(f"<li>{_e(n)}</li>" for n in dict.fromkeys(notes) if n)
-    return f'<ul class="vbi-notes">{items}</ul>'
-
-
-def provenance_html(inputs: ReportInputs, source: dict | None) -> str:
-    """vbi version, date, input files and their SHA-256, and every parameter as given."""
-    import vbi_lib
-
-    source = source or {}
-    now = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M:%S UTC")
-    rows = [
-        ["vbi version", vbi_lib.__version__],
-        ["made", now],
-        ["Python", platform.python_version()],
-        ["parameter file", source.get("name") or "none (parameters given directly)"],
-        ["parameter file SHA-256", source.get("sha256") or "-"],
-    ]
-    if inputs.parameters.profile.file is not None:
-        rows += [
-            ["profile file", inputs.parameters.profile.file.name],
-            ["profile file SHA-256", inputs.profile_sha256],
-        ]
-    if source.get("results"):
-        rows.append(["results as data", source["results"]])
-    raw = {k: _plain(v) for k, v in inputs.parameters.raw.items()}
-    text = yaml.safe_dump(raw, sort_keys=False, allow_unicode=True, default_flow_style=False)
-    return block(
-        "Provenance",
-        _table(["item", "value"], rows, "vbi-provenance"),
-        '<p class="vbi-caption">Parameters as given:</p>',
-        f'<pre class="vbi-parameters">{_e(text)}</pre>',
-    )
-
-
-def _plain(value: object) -> object:
-    """YAML-safe copy of a parameter value (numpy scalars and paths as plain values)."""
-    if isinstance(value, dict):
-        return {str(k): _plain(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_plain(v) for v in value]
-    if isinstance(value, np.generic):
-        return value.item()
-    if value is None or isinstance(value, bool | int | float | str):
-        return value
-    return str(value)
-
-
-def worst_window(analysis: ReportAnalysis) -> tuple[float, float]:
-    """Stations shown in the worst crossing's plots, in display units: the end of the
-    approach (a quarter of the bridge's length) and the bridge with the vehicle leaving it."""
-    length = analysis.inputs.bridge.length
-    wheelbase = as_system(analysis.worst.vehicle).wheelbase
-    return (
-        display.value(-0.25 * length, "length"),
-        display.value(1.02 * length + wheelbase, "length"),
-    )
-
-
-def worst_title(analysis: ReportAnalysis) -> str:
-    """Plot title of the worst requested crossing: speed, direction and span DAFs."""
-    crossing = analysis.worst
-    direction, spacing, _ = analysis.worst_key
-    dafs = ", ".join(f"{d:.2f}" for d in crossing.daf)
-    lost = " (contact lost: outside validity)" if crossing.lost_contact else ""
-    rear = f", rear spacing {number(spacing / ft)} ft" if spacing is not None else ""
-    return f"{_speed(crossing.speed)} {_arrow(direction)}{rear}: span DAF {dafs}{lost}"
