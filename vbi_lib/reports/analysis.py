@@ -83,9 +83,9 @@ __all__ = [
 #: Speeds of the sweep: (full, quick), for the study's model and for the modal model.
 SWEEP_COUNTS = {"one-coordinate": (40, 12), "modal": (12, 6)}
 #: Positions of the deck's roughness tried: (full, quick), same keys.
-POSITION_COUNTS = {"one-coordinate": (24, 8), "modal": (4, 3)}
+POSITION_COUNTS = {"one-coordinate": (24, 8), "modal": (3, 2)}
 #: Stations of the envelopes along the bridge: (full, quick).
-FIELD_COUNTS = (61, 31)
+FIELD_COUNTS = (49, 25)
 #: The JSON's row keys, in order (SI units).
 ROW_KEYS = (
     "speed_m_s", "section_m", "effect", "direction", "daf", "static", "dynamic",
