@@ -54,13 +54,17 @@ class FileReadError(ValueError):
     problem
         What is wrong, without the ``name=path`` prefix (for readers that put the file's name
         first in their own messages).
+    size
+        The file's size [bytes] when it was refused for being larger than ``max_bytes``
+        (for readers that state their own cap), else ``None``.
     """
 
-    def __init__(self, name: str, path: str | Path, problem: str) -> None:
+    def __init__(self, name: str, path: str | Path, problem: str, size: int | None = None) -> None:
         super().__init__(f"{name}={str(path)!r} {problem}")
         self.name = name
         self.path = str(path)
         self.problem = problem
+        self.size = size
 
 
 def _as_path(name: str, path: object) -> Path:
@@ -103,6 +107,7 @@ def _too_big(name: str, path: Path, size: int, max_bytes: int) -> FileReadError:
         path,
         f"holds {_size_text(size)}, more than max_bytes={max_bytes} ({_size_text(max_bytes)}) "
         "that a reader opens by default; pass a larger max_bytes to read it",
+        size,
     )
 
 

@@ -111,7 +111,10 @@ def amplification_parts(crossing: Crossing, response: SectionResponse) -> pd.Dat
             if np.isfinite(daf):  # else the static extreme is zero: no DAF to split
                 part = 0.0
                 if on.any():
-                    lines = continuous_statics(section, positions[k, on], bridge.spans, bridge.EI)
+                    face = response.faces[j] or "left"  # the shear's face at a support
+                    lines = continuous_statics(
+                        section, positions[k, on], bridge.spans, bridge.EI, side=face
+                    )
                     influence = (-lines.deflection, lines.moment, lines.shear)[e]
                     forces = crossing.axle_contact_force[k, on] @ np.atleast_1d(influence)
                     part = float(forces) / static

@@ -193,6 +193,17 @@ RANGES: dict[str, Range] = {
         "a quarter of a car to the heaviest permit load on one body",
         "Vehicle, Vehicle.from_frequency, QuarterCar (sprung_mass)",
     ),
+    "truck_mass": Range(
+        "mass of a truck: the study's one sprung mass, or a report vehicle's weight over g",
+        "kg",
+        (100.0, 1e6),
+        (9070.0, 2e5),
+        "a vehicle under 100 kg is no truck, and no single vehicle weighs 1000 t",
+        "trucks that load bridges, from AASHTO's lightest design truck, H10 (20 kip, 9.07 t), "
+        "to a 200 t permit load; a lighter value is most often a unit slip (kN for kip)",
+        "reports (vehicle.mass of a sprung-mass or quarter-car truck, the weight of every "
+        "report vehicle)",
+    ),
     "unsprung_mass": Range(
         "unsprung (axle) mass",
         "kg",
@@ -336,6 +347,18 @@ RANGES: dict[str, Range] = {
         "ISO 8608 classes A to E, paved roads and decks; classes F to H are unpaved tracks "
         "and rough ground",
         "Profile.iso8608, ISOProfile, studies.monte_carlo (c10_range), fit_iso8608 (the fit)",
+    ),
+    "measured_c10": Range(
+        "ISO 8608 C10 fitted to a measured deck or road profile",
+        "m^3",
+        (0.0, math.inf),
+        (1e-6, 8.192e-3),
+        "",
+        "measured decks and paved roads, from 1e-6 m^3 (an IRI of about 0.5 m/km, smoother "
+        "than a new pavement) to the top of class E; the study's I-76 decks fit 1.2e-5 to "
+        "1.5e-4 m^3; outside, the profile's elevation unit is the likely slip",
+        "reports (the fit to the deck profile, before anything runs)",
+        open_low=True,
     ),
     "road_rms": Range(
         "rms of a generated ISO 8608 road over its band",

@@ -24,8 +24,9 @@ written out below.
   modes, or a warning.
 * **The issue's bug reports** as regression tests.
 
-Tests that wait for the lead's core (the DAF definitions, the default number of modes) or
-for h22's shear faces are strict expected failures, named in their reasons.
+Tests that wait for the lead's core (the DAF definitions, the default number of modes) are
+strict expected failures, named in their reasons; the interior-support shear on both faces
+runs on h22's ``shear_at(x, side=...)`` and ``SectionResponse.faces``.
 """
 
 from __future__ import annotations
@@ -68,7 +69,6 @@ VEHICLES = {
     "convoy": VEHICLE_CASES["convoy"],
 }
 CORE = "issue 20: waits for the lead's core (DAF-DEFINITION.md)"
-FACES = "issue 20: waits for h22's shear faces (shear_at(x, side=...), SectionResponse.faces)"
 MODES = "issue 20: waits for the lead's default number of modes (modes=None)"
 
 
@@ -298,7 +298,6 @@ def test_crawl_sections_are_one_and_divide_by_the_beam_s_statics(case: tuple) ->
 INTERIOR = [(b, v, m) for (b, v, m) in ALL_CASES if len(BRIDGES[b]) > 1 and v in ("hs20", "convoy")]
 
 
-@pytest.mark.xfail(strict=True, reason=FACES)
 @pytest.mark.parametrize(("bridge_name", "vehicle_name", "model"), INTERIOR,
                          ids=["-".join(c) for c in INTERIOR])  # fmt: skip
 def test_crawl_interior_support_shear_on_both_faces(
@@ -328,7 +327,6 @@ def test_crawl_interior_support_shear_on_both_faces(
 
 
 # ---------------------------------------------------------------------------- design shear
-@pytest.mark.xfail(strict=True, reason=FACES)
 def test_design_shear_at_an_interior_support_under_an_hs20() -> None:
     """HS20 over 18 + 24 m: the shear on both faces of the interior support against its
     influence lines, at a crawl, and the design shear at 25 m/s on the governing face.

@@ -181,6 +181,101 @@ def test_hs20_crawl_gives_the_static_moment_envelope(rear_spacing_ft: float) -> 
     assert result.daf[1] == pytest.approx(np.ones(sections.size), abs=0.01)
 
 
+def force_method_shear(spans, loads, positions, x, side):  # noqa: ANN001, ANN201
+    """Static shear at ``x`` on face ``side`` of a continuous beam under point loads, by the
+    force method (written here, independent of the library): the beam over its end
+    supports is a simple span, the interior reactions its redundants, found from zero
+    deflection at those supports with the simple span's closed-form deflection.
+
+    ``loads`` ``(n_a,)`` [N] at ``positions`` ``(n_t, n_a)`` [m]; returns ``(n_t,)``.
+    """
+    supports = np.concatenate([[0.0], np.cumsum(spans)])
+    length = supports[-1]
+    inner = supports[1:-1]
+
+    def deflection(at, a):  # simple span, unit load at a, deflection at at (down)
+        b = length - a
+        near = np.where(at <= a, at, length - at)
+        far = np.where(at <= a, b, a)
+        return far * near * (length**2 - far**2 - near**2) / (6 * length)
+
+    flexibility = deflection(inner[:, None], inner[None, :])
+    on = (positions >= 0) & (positions <= length)
+    load = np.where(on, loads[None, :], 0.0)
+    a = np.clip(positions, 0.0, length)
+    rhs = (load[:, None, :] * deflection(inner[None, :, None], a[:, None, :])).sum(axis=-1)
+    redundants = np.linalg.solve(flexibility, rhs.T).T  # (n_t, n_inner): upward
+    left_end = (load * (length - a)).sum(axis=1) / length - redundants @ (length - inner) / length
+    behind = (a < x) if side == "left" else (a <= x)
+    shear = left_end - (load * behind).sum(axis=1)
+    passed = (inner < x) if side == "left" else (inner <= x)
+    return shear + redundants @ passed.astype(float)
+
+
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_hs20_shear_on_both_faces_of_the_supports_is_the_static_shear(side: str) -> None:
+    """The HS20 crawling over three unequal spans: the shear history just left and just
+    right of each interior support is the static shear of its axle loads at their positions,
+    by the force method written in the test; and the two faces differ."""
+    spans = [60 * u.ft, 80 * u.ft, 70 * u.ft]
+    bridge = vbi.Bridge.continuous(spans, EI=EI, mass_per_length=MBAR, damping_ratio=0.05)
+    truck = vbi.vehicles.hs20(rear_spacing=20 * u.ft, tyres=False)
+    system = vbi.vehicles.as_system(truck)
+    approach = 10 * u.ft
+    road = vbi.Profile.flat(approach + bridge.length + 2 * system.wheelbase, 1 * u.inch,
+                            start=-system.wheelbase)  # fmt: skip
+    run = vbi.simulate(bridge, truck, road, 0.5, approach, model="modal", modes=8)
+    supports = np.array(bridge.supports[1:-1])
+    shear = run.shear_at(supports, side=side)
+    positions = run.axle_position - approach
+    for i, x in enumerate(supports):
+        static = force_method_shear(spans, system.static_loads, positions, x, side)
+        scale = np.abs(static).max()
+        assert np.abs(shear[:, i] - static).max() < 5e-3 * scale
+    other = run.shear_at(supports, side="right" if side == "left" else "left")
+    assert np.abs(other - shear).max() > 0.3 * np.abs(shear).max()  # the reaction between
+
+
+def test_sections_give_the_governing_face_of_a_support_and_name_it() -> None:
+    spans = [20.0, 32.0, 20.0]
+    bridge = vbi.Bridge.continuous(spans, EI=EI, mass_per_length=MBAR, damping_ratio=0.05)
+    truck = vbi.vehicles.hs20(rear_spacing=30 * u.ft, tyres=False)
+    system = vbi.vehicles.as_system(truck)
+    road = vbi.Profile.flat(12.0 + bridge.length + 2 * system.wheelbase, 0.05,
+                            start=-system.wheelbase)  # fmt: skip
+    run = vbi.simulate(bridge, truck, road, 0.5, 12.0, model="modal", modes=8)
+    stations = np.array([10.0, 20.0, 52.0])
+    result = run.sections(stations)
+    positions = run.axle_position - 12.0
+    e = 2
+    for i, x in enumerate(stations):
+        sizes = {}
+        for side in ("left", "right"):
+            static = force_method_shear(spans, system.static_loads, positions, x, side)
+            sizes[side] = np.abs(static).max()
+            alone = run.sections([x], side=side)
+            # each face's static extreme is the crawl's, and at a crawl its DAF is one
+            assert max(abs(alone.static.maximum[e, 0]), abs(alone.static.minimum[e, 0])) == (
+                pytest.approx(sizes[side], rel=1e-3)
+            )
+            assert alone.daf[e, 0] == pytest.approx(1.0, abs=0.01)
+        expected = "" if i == 0 else max(sizes, key=sizes.get)
+        assert result.faces[i] == expected
+        governing = result.static.maximum[e, i], result.static.minimum[e, i]
+        assert max(map(abs, governing)) == pytest.approx(max(sizes.values()), rel=1e-3)
+    table = result.to_dataframe()
+    shear_rows = table[table.effect == "shear"]
+    assert set(shear_rows.face) == set(result.faces) == {"", "left", "right"}
+    assert set(table[table.effect == "moment"].face) == {""}
+    # the history is the governing face's
+    alone = run.shear_at(20.0, side=result.faces[1])
+    np.testing.assert_allclose(result.shear[:, 1], alone, rtol=0, atol=1e-9 * np.abs(alone).max())
+    with pytest.raises(ValueError, match="side='top' is not known; use one of governing"):
+        run.sections([20.0], side="top")
+    with pytest.raises(ValueError, match="side='governing' is not known; use one of left"):
+        run.shear_at(20.0, side="governing")
+
+
 def test_one_coordinate_sections_are_one_mode_of_the_modal_model() -> None:
     bridge = vbi.Bridge(20.0, 2, EI, MBAR)
     truck = vbi.Vehicle.from_frequency(1e4, 4.0, 0.1)

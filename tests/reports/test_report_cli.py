@@ -177,13 +177,23 @@ def _spawn(folder: Path, *args: str) -> subprocess.Popen:
     )
 
 
-def test_a_good_run_writes_the_html_and_prints_its_path(folder: Path) -> None:
+def test_a_good_run_writes_the_html_and_the_data_and_prints_their_paths(folder: Path) -> None:
     process = _spawn(folder, "good.yaml", "--output-dir", "out", "--no-pdf")
     out, err = process.communicate(timeout=300)
     assert process.returncode == 0, err
-    assert out.splitlines() == ["out/good.html"]
+    assert out.splitlines() == ["out/good.html", "out/good.json", "out/good.csv"]
     assert err == ""
-    assert sorted(p.name for p in (folder / "out").iterdir()) == ["good.html"]
+    assert sorted(p.name for p in (folder / "out").iterdir()) == [
+        "good.csv", "good.html", "good.json",
+    ]  # fmt: skip
+    document = json.loads((folder / "out" / "good.json").read_text())
+    rows = document["results"]
+    # one row per speed, place, effect and direction: 2 speeds, midspan, 3 effects, 2 ways
+    assert len(rows) == 2 * 1 * 3 * 2
+    assert set(rows[0]) >= {"speed_m_s", "section_m", "effect", "direction", "daf", "static",
+                            "dynamic", "lost_contact", "flight_fraction"}  # fmt: skip
+    header = (folder / "out" / "good.csv").read_text().splitlines()[0].split(",")
+    assert header == document["columns"] and len(document["columns"]) == len(rows[0])
     assert list((folder / "tmp").iterdir()) == []
 
 
@@ -211,7 +221,9 @@ def _children(process: subprocess.Popen, word: str, seconds: float) -> list[psut
     [
         (signal.SIGTERM, 143, "terminated", "ipykernel"),
         (signal.SIGINT, 130, "interrupted", "ipykernel"),
+        (signal.SIGHUP, 129, "hung up", "ipykernel"),
         (signal.SIGTERM, 143, "terminated", "chromium"),
+        (signal.SIGHUP, 129, "hung up", "chromium"),
     ],
 )
 def test_a_signal_stops_everything_and_leaves_nothing(
@@ -242,6 +254,33 @@ def test_a_signal_stops_everything_and_leaves_nothing(
     assert not [p for p in everything if p.is_running() and p.status() != psutil.STATUS_ZOMBIE]
     assert not (folder / "out").exists()
     assert list((folder / "tmp").iterdir()) == []
+    assert not _short_folders(process.pid)
+
+
+def _short_folders(pid: int) -> list[Path]:
+    """Chromium's short folders a run of process ``pid`` made outside TMPDIR (if any)."""
+    return [p for base in ("/tmp", "/var/tmp", "/dev/shm")
+            for p in Path(base).glob(f"vbi-{pid}-*")]  # fmt: skip
+
+
+def test_a_long_tmpdir_prints_the_pdf_and_leaves_nothing(folder: Path) -> None:
+    if running.find_chromium() is None:
+        if os.environ.get("CI") == "true":
+            raise RuntimeError("CI needs Debian's chromium (apt-get install -y chromium)")
+        pytest.skip("chromium is missing: the PDF under a long TMPDIR is not checked")
+    long = folder / ("a-rather-long-folder-name-" * 5)
+    long.mkdir()
+    assert len(str(long)) > 100
+    env = dict(os.environ, TMPDIR=str(long))
+    process = subprocess.Popen([sys.executable, "-m", "vbi_lib.reports", "good.yaml", "-o", "out"],
+                               cwd=folder, env=env, stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)  # fmt: skip
+    _, err = process.communicate(timeout=300)
+    assert process.returncode == 0, err
+    pdf = folder / "out" / "good.pdf"
+    assert pdf.read_bytes().startswith(b"%PDF-")
+    assert list(long.iterdir()) == []
+    assert not _short_folders(process.pid)  # chromium's short folder went with the run
 
 
 def test_papermill_runs_the_template_on_the_same_file(folder: Path) -> None:
@@ -256,8 +295,14 @@ def test_papermill_runs_the_template_on_the_same_file(folder: Path) -> None:
         for cell in notebook["cells"]
         for output in cell.get("outputs", [])
     )
-    assert "A 30 m bridge" in html and "The tyre stayed on the road" in html
+    assert "A 30 m bridge" in html and "The vehicle stayed on the road" in html
     assert "parameters given directly" in html  # papermill does not pass the file's name
+    # with results_file, papermill writes the results as data too
+    command += ["-p", "results_file", str(folder / "run.json")]
+    done = subprocess.run(command, cwd=folder, env=env, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    rows = json.loads((folder / "run.json").read_text())["results"]
+    assert len(rows) == 2 * 3 * 2 and (folder / "run.csv").is_file()
 
 
 def test_the_flat_form_checks_its_output_file_before_running(folder: Path) -> None:
@@ -270,3 +315,16 @@ def test_the_flat_form_checks_its_output_file_before_running(folder: Path) -> No
     with pytest.raises(running.OutputError, match="must be an .html file"):
         legacy.make_report(folder / "report", **flat)
     assert list((folder / "tmp").iterdir()) == []
+
+
+def test_warnings_on_the_inputs_are_printed_after_the_paths(
+    folder: Path, capsys: pytest.CaptureFixture, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    out = folder / "out"
+    written = [running.ReportFiles(out / "deck.html", None, out / "deck.json", out / "deck.csv",
+                                   ("The deck profile's elevations fit ...",))]  # fmt: skip
+    monkeypatch.setattr(cli, "write_reports", lambda *args, **kwargs: written)
+    assert cli.main(["good.yaml", "-o", "out", "--no-pdf"]) == 0
+    captured = capsys.readouterr()
+    assert captured.out.splitlines() == [str(out / f"deck{s}") for s in (".html", ".json", ".csv")]
+    assert captured.err == "vbi-report: warning: deck: The deck profile's elevations fit ...\n"

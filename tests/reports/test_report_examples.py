@@ -44,16 +44,35 @@ def test_every_key_is_documented() -> None:
     assert not missing, f"examples/README.md does not document {missing}"
 
 
-def test_the_readme_example_is_the_example_file() -> None:
-    readme = (ROOT / "README.md").read_text()
-    block = readme.split("```yaml\n", 1)[1].split("```", 1)[0]
-    shown = read_parameters(yaml.safe_load(block))
-    example = load_job(ROOT / "examples" / "generated-road.yaml").parameters
-    assert shown.profile.file is None  # it runs on a generated road: no file needed
-    assert (shown.bridge, shown.vehicle, shown.profile, shown.speeds, shown.title) == (
-        example.bridge,
-        example.vehicle,
-        example.profile,
-        example.speeds,
-        example.title,
-    )
+#: Where a reader is shown parameter files to copy: the front door, the book's pages (the
+#: README's long sections moved to book/modules.md) and the examples' own README.
+SHOWN_IN = [
+    ROOT / "README.md",
+    *sorted((ROOT / "book").glob("*.md")),
+    ROOT / "examples" / "README.md",
+]
+
+
+def test_the_readme_examples_are_the_example_files() -> None:
+    """Every YAML block of the README, the book's pages and the examples' README is an example
+    file of the same title, as it is."""
+    blocks = [
+        part.split("```", 1)[0]
+        for page in SHOWN_IN
+        for part in page.read_text().split("```yaml\n")[1:]
+    ]
+    assert blocks, "neither the README nor the book shows a parameter file"
+    by_title = {load_job(path).parameters.title: path for path in EXAMPLES if _readable(path)}
+    for block in blocks:
+        shown = read_parameters(yaml.safe_load(block), base_dir=ROOT / "examples")
+        assert shown.title in by_title, f"no example file is titled {shown.title!r}"
+        example = load_job(by_title[shown.title]).parameters
+        assert (shown.bridge, shown.vehicle, shown.profile, shown.speeds, shown.sections,
+                shown.effects, shown.direction) == (
+            example.bridge, example.vehicle, example.profile, example.speeds, example.sections,
+            example.effects, example.direction,
+        )  # fmt: skip
+
+
+def _readable(path: Path) -> bool:
+    return "shared/data" not in path.read_text() or SHARED_DATA.is_dir()

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -71,18 +72,25 @@ def test_a_mass_may_be_given_as_a_weight_and_si_spans_show_si() -> None:
         ({"bridge.span": "140 kg"}, r"bridge.span='140 kg' has units 'kg' but a length"),
         ({"vehicle.mass": "3 m"}, r"vehicle.mass='3 m' must be a mass or a weight"),
         # plausible ranges, in SI and in the unit given
-        ({"bridge.span": "1000 ft"}, r"bridge.span='1000 ft' is outside the plausible range "
-         r"3 to 300 m \(9.84 to 984 ft\)"),
-        ({"speeds": ["200 mph"]}, r"speeds\[0\]='200 mph' is outside the plausible range "
-         r"1 to 150 km/h \(0.621 to 93.2 mph\)"),
-        ({"bridge.first_frequency": "0.01 Hz"}, r"is outside the plausible range 0.2 to 50 Hz"),
-        ({"vehicle.mass": "500 kg"}, r"vehicle.mass='500 kg' is outside the plausible range"),
+        ({"bridge.span": "1000 ft"}, r"bridge.span='1000 ft' is outside the intended range "
+         r"3 to 300 m \(9.84 to 984 ft\) of span length \(vbi_lib.ranges.RANGES\['span'\]\)"),
+        ({"speeds": ["200 mph"]}, r"speeds\[0\]='200 mph' is outside the intended range "
+         r"0 to 150 km/h \(0 to 93.2 mph\)"),
+        ({"speeds": ["0 mph"]}, r"speeds\[0\]='0 mph' is outside the intended range"),
+        ({"bridge.first_frequency": "0.3 Hz"}, r"is outside the intended range 0.5 to 50 Hz"),
+        ({"vehicle.mass": "50 kg"}, r"vehicle.mass='50 kg' is outside from 100 to 1e\+06 kg \(a "
+         r"vehicle under 100 kg is no truck.*; is outside the intended range 9.07 to 200 t"),
+        ({"vehicle.mass": "35 kg"}, r"vehicle.mass='35 kg' is outside from 100 to 1e\+06 kg .*did "
+         r"you mean '35 t' \(35 t\)\?"),
         ({"bridge.damping_ratio": 1.5}, r"bridge.damping_ratio=1.5 is outside"),
         ({"bridge.damping_ratio": "5 %"}, None),
         # types
         ({"quick": "False"}, r"quick='False' must be a YAML boolean: true or false, unquoted"),
         ({"vehicle.damped": 1}, r"vehicle.damped=1 must be a YAML boolean"),
-        ({"bridge.n_spans": 3}, r"bridge.n_spans=3 is outside 1 to 2"),
+        ({"bridge.n_spans": 60}, r"bridge.n_spans=60 is outside 1 to 50 "
+         r"\(vbi_lib.ranges.RANGES\['n_spans'\]\)"),
+        ({"bridge.n_spans": 3}, r"bridge.k_mid=.* is the study's route for one span or two equal "
+         r"spans"),
         ({"bridge.n_spans": "1"}, r"bridge.n_spans='1' must be a whole number"),
         ({"bridge.n_spans": True}, r"bridge.n_spans=True must be a whole number"),
         ({"profile.seed": "1"}, r"profile.seed='1' must be a whole number"),
@@ -172,3 +180,149 @@ def test_the_flat_form_maps_onto_the_nested_keys() -> None:
     assert inputs.bridge_start == pytest.approx(320 * FT)  # the old default approach
     with pytest.raises(ParameterError, match="profile.file=None"):
         legacy.read_inputs(**FLAT, profile_path=None, approach="0 ft")
+
+
+# ---------------------------------------------------------------------------- one table of ranges
+def _keys(schema: dict, prefix: str = ""):  # noqa: ANN202
+    for name, value in schema.items():
+        if isinstance(value, dict):
+            yield from _keys(value, f"{name}.")
+        else:
+            yield prefix + name, value
+
+
+def test_every_range_is_the_library_s() -> None:
+    """The report keeps no table of its own: each key's range is its RANGES entry's intended
+    (soft) range, or the hard one where there is none."""
+    from vbi_lib.ranges import RANGES
+    from vbi_lib.reports.parameters import SCHEMA
+
+    checked = 0
+    for name, key in _keys(SCHEMA):
+        if key.range is None:
+            continue
+        spec = RANGES[key.range]
+        assert key.bounds == (spec.soft or spec.hard), name
+        checked += 1
+    assert checked >= 15
+    # and where the two tables once disagreed, the library's holds
+    assert read_parameters(base(**{"bridge.first_frequency": "0.5 Hz"})).bridge.first_frequency
+    assert read_parameters(base(**{"vehicle.frequency": "40 Hz"})).vehicle.frequency == 40.0
+    assert read_parameters(base(**{"vehicle.mass": "150 t"})).vehicle.mass == 150e3
+    with pytest.raises(ParameterError, match=r"first_frequency='0.4 Hz' is outside the intended"):
+        read_parameters(base(**{"bridge.first_frequency": "0.4 Hz"}))
+
+
+@pytest.mark.parametrize(
+    ("mass", "slip"),
+    [
+        ("77.2 kN", r"is a weight of 7.87 t, which is outside the intended range 9.07 to 200 t "
+         r"\(88.9 to 1,960 kN\) .*; did you mean '77.2 kip' \(35 t\)\?"),
+        ("5 kip", r"is a weight of 2.27 t, which is outside the intended range 9.07 to 200 t "
+         r"\(20 to 441 kip\) of mass of a truck"),
+        ("500 kip", r"is a weight of 227 t.*did you mean '500 kN' \(51 t\)"),
+    ],
+)  # fmt: skip
+def test_a_mass_outside_a_truck_s_range_names_the_likely_slip(mass: str, slip: str) -> None:
+    """Warned about, not refused: a light truck is possible (an explorer's 5 kip one), and
+    the warning heads the report's summary and goes to the command line."""
+    p = read_parameters(base(**{"vehicle.mass": mass}))
+    assert len(p.warnings) == 1
+    assert re.search(slip, p.warnings[0]), p.warnings[0]
+    assert p.warnings[0].startswith(f"vehicle.mass={mass!r} ")
+    assert read_parameters(base()).warnings == ()
+
+
+def three_spans(**vehicle: object) -> dict:
+    values = base(**{"bridge.span": ..., "bridge.n_spans": ..., "bridge.k_mid": ...,
+                     "bridge.first_frequency": ...})  # fmt: skip
+    values["bridge"].update(spans=["90 ft", "120 ft", "90 ft"], EI="5.3e11 kip*in**2",
+                            mass_per_length="11 kip/ft")  # fmt: skip
+    values["vehicle"] = vehicle or {"type": "hs20"}
+    return values
+
+
+def test_real_bridges_and_design_vehicles_are_read() -> None:
+    p = read_parameters(three_spans())
+    assert p.bridge.spans == pytest.approx((90 * FT, 120 * FT, 90 * FT))
+    assert p.bridge.span == pytest.approx(120 * FT) and p.bridge.n_spans == 3
+    assert not p.bridge.study_layout
+    assert p.vehicle.type == "hs20" and p.vehicle.frequency == 3.0
+    assert p.vehicle.rear_axle_spacing == pytest.approx((14 * FT, 30 * FT))  # the default range
+    assert p.direction == "both" and p.effects == ("displacement", "moment", "shear")
+    assert p.sections is None and p.units == "US"
+    one = read_parameters(three_spans(type="hl93-truck", rear_axle_spacing="20 ft"))
+    assert one.vehicle.rear_axle_spacing == pytest.approx((20 * FT, 20 * FT))
+    permit = read_parameters(three_spans(type="axles", loads=["12 kip", "34 kip", "34 kip"],
+                                         spacings=["14 ft", "4 ft"], tyres=False))  # fmt: skip
+    assert permit.vehicle.loads == pytest.approx((12e3 * LBF, 34e3 * LBF, 34e3 * LBF))
+    assert permit.vehicle.spacings == pytest.approx((14 * FT, 4 * FT)) and not permit.vehicle.tyres
+    car = read_parameters(three_spans(type="quarter-car", mass="30 t", unsprung_mass="3 t",
+                                      frequency="2 Hz", tyre_stiffness="10 MN/m"))  # fmt: skip
+    assert car.vehicle.unsprung_mass == 3000.0 and car.vehicle.tyre_stiffness == 1e7
+    chosen = read_parameters({**three_spans(), "sections": ["120 ft", "45 ft"],
+                              "effects": ["shear", "moment"], "direction": "backward"})  # fmt: skip
+    assert chosen.sections == pytest.approx((45 * FT, 120 * FT))
+    assert chosen.effects == ("moment", "shear") and chosen.direction == "backward"
+    same = three_spans()
+    same["bridge"]["EI"] = ["5.3e11 kip*in**2"] * 3
+    assert read_parameters(same).bridge.EI == pytest.approx(p.bridge.EI)
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        (lambda v: v["bridge"].update(span="100 ft"), r"bridge.spans=.* and bridge.span are "
+         r"both given"),
+        (lambda v: v["bridge"].update(n_spans=3), r"bridge.n_spans=3 applies to bridge.span"),
+        (lambda v: v["bridge"].update(EI=["5e11 kip*in**2", "6e11 kip*in**2", "5e11 kip*in**2"]),
+         r"bridge.EI=.* differs from span to span; the report's beam is uniform"),
+        (lambda v: v["bridge"].update(EI=["5e11 kip*in**2"]), r"bridge.EI=.* must list 3"),
+        (lambda v: v["bridge"].update(spans="90 ft"), r"bridge.spans='90 ft' must be a YAML list"),
+        (lambda v: v.update(vehicle={"type": "hs20", "mass": "35 t"}), r"vehicle.mass='35 t' "
+         r"does not apply to vehicle.type hs20; it belongs to sprung-mass, quarter-car"),
+        (lambda v: v.update(vehicle={"type": "hs21"}), r"vehicle.type='hs21' must be one of "
+         r"sprung-mass, quarter-car, hs20"),
+        (lambda v: v.update(vehicle={"type": "hs20", "rear_axle_spacing": "35 ft"}),
+         r"vehicle.rear_axle_spacing='35 ft' is outside AASHTO's 14 to 30 ft"),
+        (lambda v: v.update(vehicle={"type": "hs20", "rear_axle_spacing": ["30 ft", "14 ft"]}),
+         r"must list the shorter spacing first"),
+        (lambda v: v.update(vehicle={"type": "axles", "loads": ["12 kip", "34 kip"]}),
+         r"vehicle.spacings=\(missing\) must list 1 distances"),
+        (lambda v: v.update(vehicle={"type": "axles", "loads": ["0.3 kN", "0.3 kN"],
+                                     "spacings": ["14 ft"]}),
+         r"vehicle.loads\[0\]='0.3 kN' is outside the intended range 1 to 5,000 kN of weight of "
+         r"a vehicle"),
+        (lambda v: v.update(vehicle={"type": "quarter-car", "mass": "30 t", "frequency": "2 Hz"}),
+         r"vehicle.unsprung_mass=\(missing\) is required"),
+        (lambda v: v.update(sections=["400 ft"]), r"sections\[0\]='400 ft' lies beyond the "
+         r"bridge's far support, 91.440 m \(300.00 ft\)"),
+        (lambda v: v.update(sections=["-1 ft"]), r"sections\[0\]='-1 ft' must not be negative"),
+        (lambda v: v.update(sections=["90 ft", "90 ft"]), r"sections=.* names a station twice"),
+        (lambda v: v.update(effects=["torque"]), r"effects\[0\]='torque' must be one of "
+         r"displacement, moment, shear"),
+        (lambda v: v.update(effects="moment"), r"effects='moment' must be a YAML list"),
+        (lambda v: v.update(direction="both ways"), r"direction='both ways' must be one of "
+         r"forward, backward, both"),
+        (lambda v: v["bridge"].update(k_mid="1e8 N/m", first_frequency="3 Hz", EI=None) or
+         v["bridge"].pop("EI") or v["bridge"].pop("mass_per_length"),
+         r"bridge.k_mid=.* is the study's route for one span or two equal spans"),
+    ],
+)  # fmt: skip
+def test_bad_real_bridge_keys_are_refused_by_key(change, message: str) -> None:  # noqa: ANN001
+    values = three_spans()
+    change(values)
+    with pytest.raises(ParameterError, match=message):
+        read_parameters(values)
+
+
+def test_axle_loads_outside_a_truck_s_range_name_the_likely_slip() -> None:
+    values = three_spans(type="axles", loads=["8 kN", "32 kN", "32 kN"],
+                         spacings=["14 ft", "14 ft"])  # fmt: skip
+    p = read_parameters(values)
+    assert len(p.warnings) == 1
+    expected = (
+        r"vehicle.loads=.* weigh 7.34 t in all, outside the intended range 9.07 to 200 t .* in "
+        r"kip instead of kN it would weigh 32.7 t"
+    )
+    assert re.search(expected, p.warnings[0]), p.warnings[0]

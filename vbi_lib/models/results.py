@@ -31,7 +31,18 @@ from ..bridges import Bridge
 from ..modes import BeamModes
 from ..validity import ContactFlags
 from ..vehicles import VehicleSystem, as_system
-from .sections import SectionResponse, check_method, section_history, static_counterpart
+from .sections import (
+    FACES,
+    SectionResponse,
+    check_method,
+    check_side,
+    from_first_load,
+    governing_faces,
+    section_histories,
+    section_history,
+    snap_to_supports,
+    static_counterpart,
+)
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -228,11 +239,16 @@ class Crossing(ContactFlags):
         on = (positions >= -1e-12) & (positions <= self.bridge.length + 1e-12)
         return np.where(on, self.axle_contact_force, 0.0), positions
 
-    def _section(self, x: float | np.ndarray, effect: str, method: str) -> np.ndarray:
-        sections = _stations(x)
+    def _histories(self, function, sections, *args):  # noqa: ANN001, ANN002, ANN202
         modes, q = self.modal_history()
-        loads, positions = self._axles()
-        values = section_history(modes, q, loads, positions, sections, effect, method)
+        return from_first_load(function, modes, q, *self._axles(), sections, *args)
+
+    def _section(
+        self, x: float | np.ndarray, effect: str, method: str, side: str | tuple[str, ...] = "left"
+    ) -> np.ndarray:
+        modes, _ = self.modal_history()
+        sections = snap_to_supports(modes.supports, _stations(x))
+        values = self._histories(section_history, sections, effect, method, side)
         return values[:, 0] if np.ndim(x) == 0 else values
 
     def displacement_at(
@@ -262,23 +278,32 @@ class Crossing(ContactFlags):
         """
         return self._section(x, "moment", method)
 
-    def shear_at(self, x: float | np.ndarray, method: str = "mode-acceleration") -> np.ndarray:
+    def shear_at(
+        self, x: float | np.ndarray, method: str = "mode-acceleration", side: str = "left"
+    ) -> np.ndarray:
         """Shear history [N] (``V = dM/dx``) at stations ``x`` from the bridge start.
 
-        At a station holding the axle or an interior support, the value just to its left.
+        The shear jumps at an axle and, by the reaction, at a support: ``side`` gives the face,
+        ``"left"`` (default) or ``"right"``; at the bridge's ends both give the one on it.
         By the mode-acceleration method by default; the mode-displacement series
         (third derivatives of the modes) does not converge under a concentrated load.
-        Shapes and errors as :meth:`displacement_at`.
+        Shapes and errors as :meth:`displacement_at` (and an unknown ``side``).
         """
-        return self._section(x, "shear", method)
+        return self._section(x, "shear", method, check_side(side))
 
-    def sections(self, x: float | np.ndarray, method: str = "mode-acceleration") -> SectionResponse:
+    def sections(
+        self,
+        x: float | np.ndarray,
+        method: str = "mode-acceleration",
+        side: str | tuple[str, ...] = "governing",
+    ) -> SectionResponse:
         """Displacement, moment and shear at sections, their extremes and DAFs.
 
         Each effect's static counterpart is its extreme when the vehicle's weight crawls
         across (:func:`vbi_lib.beam_statics.static_envelope`), so each section and effect
-        has its own DAF; the result also gives where and when each extreme occurs and the
-        other effects at that instant.
+        has its own DAF, with where and when each extreme occurs.  At an interior support
+        the shear jumps by the reaction: by default the result gives the governing face (the
+        larger static shear: the design shear) and names it (``faces``, a ``face`` column).
 
         Parameters
         ----------
@@ -286,6 +311,10 @@ class Crossing(ContactFlags):
             Stations from the bridge start [m].
         method
             ``"mode-acceleration"`` (default) or ``"mode-displacement"``.
+        side
+            Face of the shear at a support: ``"governing"`` (default), ``"left"`` or
+            ``"right"``; or one of ``"left"`` and ``"right"`` for each station (a station
+            given twice with both gives both faces).
 
         Returns
         -------
@@ -294,13 +323,25 @@ class Crossing(ContactFlags):
         Raises
         ------
         ValueError
-            A station off the bridge, an unknown method.
+            A station off the bridge, an unknown method or side.
         """
         method = check_method(method)
-        sections = _stations(x)
         modes, _ = self.modal_history()
+        sections = snap_to_supports(modes.supports, _stations(x))
         system = as_system(self.vehicle)
-        static = static_counterpart(modes, sections, system.static_loads, system.offsets, method)
+        axles = (system.static_loads, system.offsets)
+        if isinstance(side, str) and check_side(side, FACES) == "governing":
+            faces = governing_faces(modes, sections, *axles, method)
+        elif isinstance(side, str):
+            faces = (side,) * sections.size
+        else:
+            faces = tuple(check_side(s) for s in side)
+            if len(faces) != sections.size:
+                raise ValueError(
+                    f"side={side!r} must give one face for each of the {sections.size} stations"
+                )
+        static = static_counterpart(modes, sections, *axles, method, faces)
+        displacement, moment, shear = self._histories(section_histories, sections, method, faces)
         plural = "s" if modes.count > 1 else ""
         notes = [
             f"section responses by the {method} method with {modes.count} mode{plural}; "
@@ -313,9 +354,9 @@ class Crossing(ContactFlags):
             sections=sections,
             time=self.time,
             position=self.position - self.bridge_start,
-            displacement=self._section(sections, "displacement", method),
-            moment=self._section(sections, "moment", method),
-            shear=self._section(sections, "shear", method),
+            displacement=displacement,
+            moment=moment,
+            shear=shear,
             static=static,
             method=method,
             modes=modes.count,

@@ -1,354 +1,294 @@
-"""What a report computes: DAF against speed, the worst crossing, the road and the code values.
+"""What a report computes: the DAF of each effect at each place, its sweep, envelopes, the road.
 
-Each function returns one result type that exports itself (``to_dataframe()``) and plots
-itself (``plot(ax=...)``), in the display units of :mod:`vbi_lib.display`.  The crossings are
-the study's one-coordinate model (RK4) run by :func:`vbi_lib.simulate_many` (coupled, and
-decoupled as a bound: the contact force of the truck on a rigid road, (92)-(99)).  Every
-crossing reports whether the tyre stayed on the road (``lost_contact``): a DAF of a crossing
-that lost contact is outside the model's validity and is never taken as a result.
+Each result type exports itself (``to_dataframe()``) and plots itself (``plot(ax=...)``), in
+the display units of :mod:`vbi_lib.display`.
+
+**The DAF of a place and effect** is the crossing's :meth:`~vbi_lib.Crossing.sections`: the
+extreme of the effect there over the whole crossing, by the mode-acceleration method, over
+its extreme when the same axles crawl across (exact influence lines), in the sense in which
+the static extreme is larger (:mod:`vbi_lib.models.sections`).  Every place is run in each
+direction asked, at each requested speed, with the model of :mod:`.inputs` (the study's
+one-coordinate model for its sprung mass on one span or two equal spans, else the modal
+model).  At an interior support the shear is given on both faces.  A backward crossing is
+run on the bridge seen from its far end; its stations, faces and signs are turned back, so
+every station, face and sign here is the forward one (shear ``V = dM/dx`` with ``x`` from the
+first support).
+
+**The design truck's rear spacing.**  Given a range, the spacing that governs each place,
+effect and face is found from the statics first
+(:func:`vbi_lib.vehicles.governing_rear_spacing`), and each row is the crossing of the truck
+with its governing spacing.
+
+**Validity.**  A crossing whose bilateral contact became tensile (the study's sprung mass
+pulling on the road) is outside the model's validity: ``lost_contact``, never taken as a
+result.  A tyre that leaves the road is modelled (``flight_fraction``, :class:`Flights`),
+and said.
 """
 
 from __future__ import annotations
 
-import warnings
-from dataclasses import dataclass
+from collections import Counter
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
 
-from .. import amplification as amp
 from .. import display
+from ..beam_statics import EFFECTS, QUANTITY, field_envelope
 from ..bridges import Bridge
-from ..models import BatchResult, Crossing, simulate, simulate_many
-from ..profiles import Profile, iso8608_class
-from ..roughness import fit_iso8608, iri
-from ..validity import ContactLossWarning
-from .inputs import ReportInputs, sweep_speeds
+from ..models import Crossing, SectionResponse, simulate, simulate_many
+from ..profiles import Profile
+from ..vehicles.fleet import RearSpacingSearch, governing_rear_spacing
+from .along import Envelopes, Flights, envelopes, flights, flip, vehicle_label
+from .codes import Allowances, allowances, loaded_length
+from .columns import Column, columns
+from .columns import entries as station_entries
+from .inputs import ReportInputs, sweep_speeds, vehicle_at
+from .road import (
+    PositionStudy,
+    SpanRoughness,
+    SpeedStudy,
+    position_study,
+    quiet,
+    shifted_deck,
+    span_roughness,
+    speed_study,
+)
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
 __all__ = [
     "Allowances",
+    "Column",
+    "Envelopes",
+    "Flights",
     "PositionStudy",
     "ReportAnalysis",
+    "SectionStudy",
     "SpanRoughness",
     "SpeedStudy",
+    "Sweep",
     "allowances",
     "analyse",
+    "columns",
+    "loaded_length",
     "position_study",
+    "shifted_deck",
     "span_roughness",
     "speed_study",
 ]
 
+#: Speeds of the sweep: (full, quick), for the study's model and for the modal model.
+SWEEP_COUNTS = {"one-coordinate": (40, 12), "modal": (12, 6)}
+#: Positions of the deck's roughness tried: (full, quick), same keys.
+POSITION_COUNTS = {"one-coordinate": (24, 8), "modal": (3, 2)}
+#: Stations of the envelopes along the bridge: (full, quick).
+FIELD_COUNTS = (49, 25)
+#: The JSON's row keys, in order (SI units).
+ROW_KEYS = (
+    "speed_m_s", "section_m", "effect", "direction", "daf", "static", "dynamic",
+    "lost_contact", "flight_fraction", "face", "sense", "place", "rear_axle_spacing_m", "valid",
+)  # fmt: skip
 
-# ---------------------------------------------------------------------------- speeds
+
+# ---------------------------------------------------------------------------- the crossings
 @dataclass(frozen=True, eq=False)
-class SpeedStudy:
-    """DAF of each span at each speed, coupled and decoupled, with the contact checks.
+class _Runs:
+    """Crossings and their section responses, by (direction, rear spacing, speed)."""
 
-    ``coupled`` and ``decoupled`` are :class:`~vbi_lib.BatchResult` rows in the order of
-    ``speeds`` [m/s]; ``n_spans`` columns of their ``daf`` are used.
+    crossings: dict
+    responses: dict
+    notes: list
+
+
+def _run(
+    inputs: ReportInputs,
+    vehicle: object,
+    direction: str,
+    speed: float,
+    entries: list[tuple[float, str]],
+) -> tuple[Crossing, SectionResponse, list[str]]:
+    """One crossing in ``direction`` and its sections at ``entries`` (forward stations)."""
+    run = inputs.run(direction, speed)
+    x = inputs.to_run(np.array([e[0] for e in entries]), direction)
+    faces = tuple(f if direction == "forward" else flip(f) for _, f in entries)
+    options = {"model": inputs.model}
+    if inputs.modes is not None:
+        options["modes"] = inputs.modes
+    crossing, said = quiet(
+        simulate, run.bridge, vehicle, run.road, speed, run.bridge_start, **options
+    )
+    return crossing, crossing.sections(x, side=faces), said
+
+
+def _values(response: SectionResponse, direction: str, e: int, i: int) -> tuple:
+    """DAF, static and dynamic extreme (forward signs) and the sense at entry ``i``."""
+    governing = response.governing[e, i] > 0
+    static = (response.static.maximum if governing else response.static.minimum)[e, i]
+    dynamic = (response.maximum if governing else response.minimum)[e, i]
+    sense = "max" if governing else "min"
+    if direction == "backward" and EFFECTS[e] == "shear":  # V = dM/dx turns sign with x
+        static, dynamic, sense = -static, -dynamic, "min" if governing else "max"
+    return float(response.daf[e, i]), float(static), float(dynamic), sense
+
+
+@dataclass(frozen=True, eq=False)
+class SectionStudy:
+    """The DAF of each effect at each place, per requested speed and direction.
+
+    ``rows`` holds one row per speed, place, effect (and face) and direction, in SI: the
+    keys of :data:`ROW_KEYS` (the report's JSON), ``column`` (index into ``columns``) and
+    ``crossing`` (the key of the crossing it comes from).
     """
 
-    speeds: np.ndarray
-    coupled: BatchResult
-    decoupled: BatchResult
-    n_spans: int
+    columns: tuple[Column, ...]
+    rows: pd.DataFrame
 
-    @property
-    def lost_contact(self) -> np.ndarray:
-        """Whether the coupled crossing at each speed lost contact (outside validity)."""
-        return self.coupled.lost_contact
-
-    def largest(self, span: int) -> tuple[float, float] | None:
-        """Largest valid coupled DAF of ``span`` (0-based) and its speed, ``None`` if none."""
-        valid = ~self.lost_contact
-        if not valid.any():
-            return None
-        daf = np.where(valid, self.coupled.daf[:, span], -np.inf)
-        best = int(np.argmax(daf))
-        return float(daf[best]), float(self.speeds[best])
+    def largest(self, c: int) -> pd.Series | None:
+        """The row of the largest valid DAF of column ``c``, ``None`` if none is valid."""
+        rows = self.rows[(self.rows.column == c) & self.rows.valid & self.rows.daf.notna()]
+        return None if rows.empty else rows.loc[rows.daf.idxmax()]
 
     def to_dataframe(self) -> pd.DataFrame:
-        """One row per speed: DAF per span (coupled, decoupled) and the contact checks."""
-        columns: dict[str, object] = {
-            display.label("speed", "speed"): display.value(self.speeds, "speed")
-        }
-        for j in range(self.n_spans):
-            columns[f"DAF span {j + 1}"] = self.coupled.daf[:, j]
-            columns[f"DAF span {j + 1}, decoupled"] = self.decoupled.daf[:, j]
-        columns["largest contact force / weight"] = self.coupled.contact_force_amplification
-        columns["smallest contact force / weight"] = self.coupled.min_contact_force_ratio
-        columns["contact lost"] = self.lost_contact
-        return pd.DataFrame(columns)
+        """The rows in display units: speed, direction, place, effect, face, static and
+        dynamic extremes, DAF, the contact checks."""
+        out = []
+        for _, row in self.rows.iterrows():
+            quantity = QUANTITY[row.effect]
+            out.append({
+                display.label("speed", "speed"): display.value(row.speed_m_s, "speed"),
+                "direction": row.direction,
+                "place": row.place,
+                display.label("station", "length"): display.value(row.section_m, "length"),
+                "effect": row.effect,
+                "face": row.face,
+                "unit": display.symbol(quantity),
+                "static": display.value(row.static, quantity),
+                "dynamic": display.value(row.dynamic, quantity),
+                "DAF": row.daf,
+                "contact lost": row.lost_contact,
+                "tyre off the road [fraction of the time]": row.flight_fraction,
+            })  # fmt: skip
+        return pd.DataFrame(out)
 
     def plot(self, ax: Axes | None = None, allowance: float | None = None) -> Axes:
-        """DAF against speed: coupled (solid), decoupled (dashed), lost contact crossed out."""
+        """The largest valid DAF of each place and effect, as horizontal bars."""
         import matplotlib.pyplot as plt
 
         if ax is None:
-            _, ax = plt.subplots(figsize=(7, 3.4))
+            _, ax = plt.subplots(figsize=(7, 0.3 * len(self.columns) + 1))
+        best = [self.largest(c) for c in range(len(self.columns))]
+        labels = [f"{col.label}: {col.effect}" for col in self.columns]
+        values = [np.nan if b is None else b.daf for b in best]
+        ax.barh(labels, values, color=[f"C{EFFECTS.index(c.effect)}" for c in self.columns])
+        if allowance is not None:
+            ax.axvline(allowance, color="k", ls=":", label="AASHTO LRFD (1 + IM)")
+            ax.legend(loc="lower right", fontsize="small")
+        ax.invert_yaxis()
+        ax.set_xlabel("largest DAF at the requested speeds [-]")
+        return ax
+
+
+def _section_study(
+    inputs: ReportInputs,
+    cols: tuple[Column, ...],
+    entries: list[tuple[float, str]],
+    spacing_of: list[float | None],
+    runs: _Runs,
+) -> SectionStudy:
+    rows = []
+    for c, col in enumerate(cols):
+        e, i = EFFECTS.index(col.effect), entries.index(col.key)
+        for direction in inputs.directions:
+            for speed in inputs.speeds:
+                key = (direction, spacing_of[c], speed)
+                crossing, response = runs.crossings[key], runs.responses[key]
+                daf, static, dynamic, sense = _values(response, direction, e, i)
+                rows.append({
+                    "speed_m_s": float(speed),
+                    "section_m": float(col.place.x),
+                    "effect": col.effect,
+                    "direction": direction,
+                    "daf": daf,
+                    "static": static,
+                    "dynamic": dynamic,
+                    "lost_contact": bool(crossing.lost_contact),
+                    "flight_fraction": float(crossing.flight_fraction),
+                    "face": col.face,
+                    "sense": sense,
+                    "place": col.place.name,
+                    "rear_axle_spacing_m": spacing_of[c],
+                    "valid": not bool(crossing.lost_contact),
+                    "min_contact_force_ratio": float(crossing.min_contact_force_ratio),
+                    "column": c,
+                    "crossing": key,
+                })  # fmt: skip
+    return SectionStudy(cols, pd.DataFrame(rows))
+
+
+# ---------------------------------------------------------------------------- the sweep
+@dataclass(frozen=True, eq=False)
+class Sweep:
+    """The DAF of each place and effect against speed, per direction.
+
+    ``daf`` is ``(n_directions, n_speeds, n_columns)``; ``lost`` ``(n_directions,
+    n_speeds)`` marks crossings whose bilateral contact became tensile (outside validity),
+    ``flight`` the fraction of the time a tyre was off the road.
+    """
+
+    speeds: np.ndarray
+    directions: tuple[str, ...]
+    columns: tuple[Column, ...]
+    daf: np.ndarray
+    lost: np.ndarray
+    flight: np.ndarray
+    vehicle: str
+
+    def to_dataframe(self) -> pd.DataFrame:
+        """One row per direction and speed: the DAF of every place and effect."""
+        rows = []
+        for d, direction in enumerate(self.directions):
+            for s, speed in enumerate(self.speeds):
+                row = {
+                    display.label("speed", "speed"): display.value(speed, "speed"),
+                    "direction": direction,
+                    "contact lost": bool(self.lost[d, s]),
+                }
+                for c, col in enumerate(self.columns):
+                    row[f"{col.label}: {col.effect}"] = self.daf[d, s, c]
+                rows.append(row)
+        return pd.DataFrame(rows)
+
+    def plot(self, ax: Axes | None = None, effect: str = "moment",
+             allowance: float | None = None) -> Axes:  # fmt: skip
+        """DAF of ``effect`` against speed at every place (solid forward, dashed backward);
+        lost contact crossed out."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(7, 3.2))
         v = display.value(self.speeds, "speed")
-        lost = self.lost_contact
-        for j in range(self.n_spans):
-            coupled = self.coupled.daf[:, j]
-            (line,) = ax.plot(v, np.where(lost, np.nan, coupled), label=f"span {j + 1}, coupled")
-            ax.plot(
-                v,
-                self.decoupled.daf[:, j],
-                "--",
-                color=line.get_color(),
-                lw=1,
-                label=f"span {j + 1}, decoupled (bound)",
-            )
-            ax.plot(v[lost], coupled[lost], "x", color=line.get_color(), ms=6)
-        if lost.any():
+        shown = [c for c, col in enumerate(self.columns) if col.effect == effect]
+        for k, c in enumerate(shown):
+            color = f"C{k % 10}"
+            for d, direction in enumerate(self.directions):
+                y = np.where(self.lost[d], np.nan, self.daf[d, :, c])
+                label = self.columns[c].label if d == 0 else None
+                ax.plot(v, y, "-" if direction == "forward" else "--", color=color, lw=1.2,
+                        label=label)  # fmt: skip
+                lost = self.lost[d]
+                ax.plot(v[lost], self.daf[d, lost, c], "x", color=color, ms=5)
+        if self.lost.any():
             ax.plot([], [], "x", color="k", label="contact lost: outside validity")
         if allowance is not None:
             ax.axhline(allowance, color="k", lw=1, ls=":", label="AASHTO LRFD (1 + IM)")
         ax.set_xlabel(display.label("speed", "speed"))
-        ax.set_ylabel("DAF [-]")
-        ax.legend(loc="best", fontsize="small")
+        ax.set_ylabel(f"DAF of the {effect} [-]")
+        ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="x-small",
+                  frameon=False)  # fmt: skip
         return ax
-
-
-def speed_study(inputs: ReportInputs, speeds: np.ndarray) -> SpeedStudy:
-    """Coupled and decoupled crossings of ``inputs.road`` at ``speeds`` [m/s].
-
-    Warnings of lost contact are not raised: the result holds them (``lost_contact``).
-    """
-    speeds = np.asarray(speeds, dtype=float)
-    args = (inputs.bridge, inputs.vehicle, inputs.road, list(speeds), inputs.bridge_start)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ContactLossWarning)
-        coupled = simulate_many(*args)
-        decoupled = simulate_many(*args, coupled=False)
-    return SpeedStudy(speeds, coupled, decoupled, inputs.bridge.n_spans)
-
-
-# ---------------------------------------------------------------------------- position
-def shifted_deck(deck: Profile, offset: float) -> Profile:
-    """The deck's roughness moved ``offset`` [m] along the bridge, wrapping round its ends.
-
-    The straight line through the deck's end elevations is kept; the rest (zero at both ends)
-    is read at ``(x - offset) mod L``, so the shifted deck has the same roughness, no step,
-    and its features lie ``offset`` further on.
-
-    >>> deck = Profile(np.array([0.0, 1.0, 2.0, 3.0, 4.0]), np.array([0.0, 1.0, 0.0, 0.0, 0.0]))
-    >>> shifted_deck(deck, 1.0).elevation.tolist()
-    [0.0, 0.0, 1.0, 0.0, 0.0]
-    """
-    x, z = deck.x, deck.elevation
-    length = x[-1] - x[0]
-    trend = z[0] + (z[-1] - z[0]) * (x - x[0]) / length
-    rest = z - trend
-    moved = np.interp(np.mod(x - x[0] - offset, length) + x[0], x, rest)
-    return Profile(x, trend + moved, name=deck.name)
-
-
-@dataclass(frozen=True, eq=False)
-class PositionStudy:
-    """Largest DAF of the spans with the deck's roughness moved along the bridge.
-
-    ``daf`` and ``lost`` are ``(n_speeds, n_offsets)``: for each requested speed and each
-    ``offset`` [m], the largest DAF of the spans and whether that crossing lost contact.
-    """
-
-    speeds: np.ndarray
-    offsets: np.ndarray
-    daf: np.ndarray
-    lost: np.ndarray
-
-    def to_dataframe(self) -> pd.DataFrame:
-        """One row per speed: the smallest, median and largest valid DAF over the offsets."""
-        rows = []
-        for i, speed in enumerate(self.speeds):
-            valid = self.daf[i][~self.lost[i]]
-            rows.append(
-                {
-                    display.label("speed", "speed"): display.value(speed, "speed"),
-                    "smallest DAF": valid.min() if valid.size else np.nan,
-                    "median DAF": np.median(valid) if valid.size else np.nan,
-                    "largest DAF": valid.max() if valid.size else np.nan,
-                    "positions that lost contact": int(self.lost[i].sum()),
-                    "positions": self.offsets.size,
-                }
-            )
-        return pd.DataFrame(rows)
-
-    def plot(self, ax: Axes | None = None) -> Axes:
-        """Largest DAF of the spans against the offset, one line per speed."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 3.4))
-        x = display.value(self.offsets, "length")
-        for i, speed in enumerate(self.speeds):
-            label = f"{display.value(speed, 'speed'):.0f} {display.symbol('speed')}"
-            (line,) = ax.plot(
-                x, np.where(self.lost[i], np.nan, self.daf[i]), "o-", ms=3, label=label
-            )
-            ax.plot(x[self.lost[i]], self.daf[i][self.lost[i]], "x", color=line.get_color())
-        if self.lost.any():
-            ax.plot([], [], "x", color="k", label="contact lost: outside validity")
-        ax.set_xlabel(display.label("deck roughness moved along the bridge by", "length"))
-        ax.set_ylabel("largest DAF of the spans [-]")
-        ax.legend(loc="best", fontsize="small")
-        return ax
-
-
-def position_study(inputs: ReportInputs, count: int) -> PositionStudy:
-    """DAF at the requested speeds with the deck moved by ``count`` even steps over its length."""
-    deck = inputs.deck
-    offsets = np.arange(count) * deck.length / count
-    roads = [inputs.with_deck(shifted_deck(deck, offset)) for offset in offsets]
-    speeds = np.asarray(inputs.speeds, dtype=float)
-    every_road = [road for _ in speeds for road in roads]
-    every_speed = [speed for speed in speeds for _ in roads]
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ContactLossWarning)
-        result = simulate_many(
-            inputs.bridge, inputs.vehicle, every_road, every_speed, inputs.bridge_start
-        )
-    n = inputs.bridge.n_spans
-    daf = np.max(result.daf[:, :n], axis=1).reshape(speeds.size, count)
-    return PositionStudy(speeds, offsets, daf, result.lost_contact.reshape(speeds.size, count))
-
-
-# ---------------------------------------------------------------------------- the road
-@dataclass(frozen=True, eq=False)
-class SpanRoughness:
-    """IRI and ISO 8608 parameters of each span's deck profile (and of the whole deck).
-
-    ``names`` label the rows (``"span 1"``, ..., ``"whole deck"``); ``iri`` [m/km], ``c10``
-    [m^3] and ``waviness`` are NaN where they could not be computed (``reasons`` says why).
-    """
-
-    names: tuple[str, ...]
-    iri: np.ndarray
-    c10: np.ndarray
-    waviness: np.ndarray
-    reasons: tuple[str, ...]
-    deck: Profile
-    approach_end: float
-
-    @property
-    def iso_class(self) -> tuple[str, ...]:
-        """ISO 8608 class of each row's fitted C10 (``"-"`` where not fitted)."""
-        return tuple(iso8608_class(c) if np.isfinite(c) else "-" for c in self.c10)
-
-    def to_dataframe(self) -> pd.DataFrame:
-        """One row per span (and the whole deck): IRI, C10, waviness, ISO class."""
-        return pd.DataFrame(
-            {
-                display.label("IRI", "roughness"): display.value(self.iri, "roughness"),
-                "C10 [1e-6 m^3]": self.c10 * 1e6,
-                "waviness [-]": self.waviness,
-                "ISO 8608 class": self.iso_class,
-            },
-            index=pd.Index(self.names, name="part"),
-        )
-
-    def plot(self, ax: Axes | None = None, road: Profile | None = None) -> Axes:
-        """The deck profile (and the end of the approach), elevation against station."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 2.8))
-        if road is not None:
-            x = np.linspace(-0.25 * self.deck.length, 0.0, 200)
-            z = road.elevation_at(x + self.approach_end)
-            ax.plot(display.value(x, "length"), display.value(z, "elevation"), color="0.55",
-                    lw=0.8, label="approach")  # fmt: skip
-        ax.plot(
-            display.value(self.deck.x, "length"),
-            display.value(self.deck.elevation, "elevation"),
-            lw=0.8,
-            label="deck",
-        )
-        ax.axvspan(0, display.value(self.deck.x[-1], "length"), color="0.94", zorder=0)
-        ax.set_xlabel(display.label("station from the bridge's first support", "length"))
-        ax.set_ylabel(display.label("elevation", "elevation"))
-        ax.legend(loc="best", fontsize="small")
-        return ax
-
-
-def _iri_value(profile: Profile) -> float:
-    """The whole-profile IRI [m/km]."""
-    return iri(profile).iri
-
-
-def span_roughness(inputs: ReportInputs) -> SpanRoughness:
-    """IRI (ASTM E1926) and the ISO 8608 fit of each span's deck and of the whole deck."""
-    deck, span, n = inputs.deck, inputs.bridge.span, inputs.bridge.n_spans
-    parts = [
-        (f"span {j + 1}", deck.segment(j * span, min((j + 1) * span, deck.end))) for j in range(n)
-    ]
-    if n > 1:
-        parts.append(("whole deck", deck))
-    values = np.full((len(parts), 3), np.nan)
-    reasons = []
-    for i, (_, part) in enumerate(parts):
-        why = []
-        try:
-            values[i, 0] = _iri_value(part)
-        except ValueError as error:
-            why.append(f"IRI not computed: {error}")
-        try:
-            values[i, 1:] = fit_iso8608(part)
-        except ValueError as error:
-            why.append(f"ISO 8608 fit not computed: {error}")
-        reasons.append("; ".join(why))
-    return SpanRoughness(
-        names=tuple(name for name, _ in parts),
-        iri=values[:, 0],
-        c10=values[:, 1],
-        waviness=values[:, 2],
-        reasons=tuple(reasons),
-        deck=deck,
-        approach_end=inputs.bridge_start,
-    )
-
-
-# ---------------------------------------------------------------------------- design codes
-@dataclass(frozen=True)
-class Allowances:
-    """Design DAF ``1 + IM`` of the codes for this bridge, by code (see :mod:`amplification`)."""
-
-    daf: dict[str, float]
-    #: AASHTO LRFD Table 3.6.2.1-1, all limit states but fatigue and deck joints.
-    aashto_lrfd: float
-
-    def to_dataframe(self) -> pd.DataFrame:
-        """One row per code: its design DAF."""
-        return pd.DataFrame({"design DAF (1 + IM)": self.daf}).rename_axis("code")
-
-    def plot(self, ax: Axes | None = None) -> Axes:
-        """Horizontal bars of the design DAFs."""
-        import matplotlib.pyplot as plt
-
-        if ax is None:
-            _, ax = plt.subplots(figsize=(6, 2))
-        ax.barh(list(self.daf), list(self.daf.values()), color="0.6")
-        ax.set_xlabel("design DAF (1 + IM) [-]")
-        return ax
-
-
-def allowances(bridge: Bridge) -> Allowances:
-    """AASHTO LRFD, AASHTO Standard (span in feet) and OHBDC 1983 (first frequency)."""
-    lrfd = amp.aashto_lrfd_allowance()
-    return Allowances(
-        aashto_lrfd=1.0 + lrfd,
-        daf={
-            f"AASHTO LRFD, Table 3.6.2.1-1 (IM {lrfd:.0%})": 1.0 + lrfd,
-            "AASHTO Standard, 50 / (L + 125) <= 0.30": 1.0
-            + float(amp.aashto_standard_impact(bridge.span)),
-            f"OHBDC 1983, at f1 = {bridge.first_frequency_hz:.2f} Hz": 1.0
-            + float(amp.ohbdc_1983_allowance(bridge.first_frequency_hz)),
-        },
-    )
 
 
 # ---------------------------------------------------------------------------- everything
@@ -357,29 +297,69 @@ class ReportAnalysis:
     """Everything a report shows (see :func:`analyse`)."""
 
     inputs: ReportInputs
-    requested: SpeedStudy
-    sweep: SpeedStudy
+    sections: SectionStudy
+    sweep: Sweep
+    envelopes: Envelopes
+    flights: Flights
     position: PositionStudy
     roughness: SpanRoughness
     allowances: Allowances
     worst: Crossing
+    worst_key: tuple
+    vehicles: dict
+    spacing_search: RearSpacingSearch | None = None
+    requested: SpeedStudy | None = None
+    notes: tuple[str, ...] = field(default=())
 
     def to_dataframe(self) -> pd.DataFrame:
-        """The DAF table at the requested speeds (:meth:`SpeedStudy.to_dataframe`)."""
-        return self.requested.to_dataframe()
+        """The DAF of every place and effect at the requested speeds
+        (:meth:`SectionStudy.to_dataframe`)."""
+        return self.sections.to_dataframe()
 
     def plot(self, ax: Axes | None = None) -> Axes:
-        """DAF against speed with the AASHTO LRFD value (:meth:`SpeedStudy.plot`)."""
-        return self.sweep.plot(ax, allowance=self.allowances.aashto_lrfd)
+        """The largest DAF of each place and effect with the AASHTO LRFD value."""
+        return self.sections.plot(ax, allowance=self.allowances.aashto_lrfd)
+
+    def results(self) -> list[dict]:
+        """The rows of the report's JSON: one per speed, place, effect (face) and direction,
+        SI units, the keys of :data:`ROW_KEYS`; NaN as ``None``."""
+        out = []
+        for record in self.sections.rows[list(ROW_KEYS)].to_dict(orient="records"):
+            out.append({
+                k: (None if isinstance(v, float) and not np.isfinite(v) else v)
+                for k, v in record.items()
+            })  # fmt: skip
+        return out
+
+
+def _spacings(
+    inputs: ReportInputs, cols: tuple[Column, ...]
+) -> tuple[list, RearSpacingSearch | None]:
+    """The rear spacing each column runs with, and the search (for a design truck's range):
+    each column's own, its shear on its own face."""
+    spacing = inputs.parameters.vehicle.rear_axle_spacing
+    if spacing is None:
+        return [None] * len(cols), None
+    low, high = spacing
+    if high - low < 1e-9:
+        return [low] * len(cols), None
+    search = governing_rear_spacing(
+        inputs.bridge.spans, inputs.bridge.EI, [col.place.x for col in cols], low, high,
+        direction=inputs.parameters.direction, side=[col.face or "both" for col in cols],
+    )  # fmt: skip
+    out = [float(search.governing[EFFECTS.index(col.effect), c]) for c, col in enumerate(cols)]
+    return out, search
 
 
 def analyse(inputs: ReportInputs, quick: bool | None = None) -> ReportAnalysis:
     """Run every crossing a report needs.
 
-    The requested speeds (coupled and decoupled), a sweep of speeds from half the slowest to
-    1.2 times the fastest (40 speeds, 12 when ``quick``), the deck moved along the bridge in
-    24 steps (8 when ``quick``) at the requested speeds, and the histories of the worst valid
-    requested crossing.
+    In each direction asked and at each requested speed, a crossing of the vehicle (of each
+    governing rear spacing of a design truck given a range) and its sections; a sweep of
+    speeds from half the slowest to 1.2 times the fastest (:data:`SWEEP_COUNTS`) in each
+    direction; the static and dynamic envelopes along the bridge; the deck moved along the
+    bridge (:data:`POSITION_COUNTS`, forward); the flights of the tyres; the code values.
+    For the study's own case also its span DAF, coupled and decoupled (the bound).
 
     Parameters
     ----------
@@ -393,47 +373,86 @@ def analyse(inputs: ReportInputs, quick: bool | None = None) -> ReportAnalysis:
     ReportAnalysis
     """
     quick = inputs.parameters.quick if quick is None else bool(quick)
-    requested = speed_study(inputs, np.asarray(inputs.speeds))
-    sweep = speed_study(inputs, sweep_speeds(inputs.speeds, 12 if quick else 40))
-    n = inputs.bridge.n_spans
-    largest = np.max(requested.coupled.daf[:, :n], axis=1)
-    valid = ~requested.lost_contact
-    worst = int(np.argmax(np.where(valid, largest, -np.inf) if valid.any() else largest))
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ContactLossWarning)
-        crossing = simulate(
-            inputs.bridge, inputs.vehicle, inputs.road, inputs.speeds[worst], inputs.bridge_start
-        )
+    cols = columns(inputs)
+    entries = station_entries(cols)
+    spacing_of, search = _spacings(inputs, cols)
+    vehicles = {s: inputs.vehicles.get(s) or vehicle_at(inputs.parameters, s)
+                for s in dict.fromkeys(spacing_of)}  # fmt: skip
+    counts = Counter(spacing_of)
+    main = min(counts, key=lambda s: (-counts[s], s if s is not None else 0.0))
+    crossings, responses, notes = {}, {}, []
+    for direction in inputs.directions:
+        for spacing, vehicle in vehicles.items():
+            for speed in inputs.speeds:
+                crossing, response, said = _run(inputs, vehicle, direction, speed, entries)
+                crossings[direction, spacing, speed] = crossing
+                responses[direction, spacing, speed] = response
+                notes += said
+    runs = _Runs(crossings, responses, notes)
+    study = _section_study(inputs, cols, entries, spacing_of, runs)
+    # the sweep, with the vehicle of the main spacing
+    count = SWEEP_COUNTS[inputs.model][1 if quick else 0]
+    speeds = sweep_speeds(inputs.speeds, count)
+    daf = np.full((len(inputs.directions), speeds.size, len(cols)), np.nan)
+    lost = np.zeros((len(inputs.directions), speeds.size), dtype=bool)
+    flight = np.zeros_like(daf[..., 0])
+    for d, direction in enumerate(inputs.directions):
+        for s, speed in enumerate(speeds):
+            crossing, response, said = _run(inputs, vehicles[main], direction, speed, entries)
+            notes += said
+            lost[d, s] = crossing.lost_contact
+            flight[d, s] = crossing.flight_fraction
+            for c, col in enumerate(cols):
+                e, i = EFFECTS.index(col.effect), entries.index(col.key)
+                daf[d, s, c] = _values(response, direction, e, i)[0]
+    sweep = Sweep(speeds, inputs.directions, cols, daf, lost, flight,
+                  vehicle_label(vehicles[main]))  # fmt: skip
+    along = envelopes(inputs, vehicles[main], runs.crossings, main,
+                      FIELD_COUNTS[1 if quick else 0])  # fmt: skip
+    # the worst valid requested crossing
+    valid = study.rows[study.rows.valid & study.rows.daf.notna()]
+    pool = valid if not valid.empty else study.rows[study.rows.daf.notna()]
+    worst_key = pool.loc[pool.daf.idxmax(), "crossing"] if not pool.empty else next(iter(crossings))
+    requested = None
+    if inputs.study_case:
+        requested = speed_study(inputs, np.asarray(inputs.speeds))
+    position = position_study(
+        inputs, POSITION_COUNTS[inputs.model][1 if quick else 0], vehicles[main]
+    )
     return ReportAnalysis(
         inputs=inputs,
-        requested=requested,
+        sections=study,
         sweep=sweep,
-        position=position_study(inputs, 8 if quick else 24),
+        envelopes=along,
+        flights=flights(inputs, runs.crossings),
+        position=position,
         roughness=span_roughness(inputs),
-        allowances=allowances(inputs.bridge),
-        worst=crossing,
+        allowances=allowances(inputs.bridge, cols),
+        worst=crossings[worst_key],
+        worst_key=worst_key,
+        vehicles=vehicles,
+        spacing_search=search,
+        requested=requested,
+        notes=tuple(dict.fromkeys(notes)),
     )
 
 
 def warm_up() -> None:
-    """Run a tiny report's crossings, so the compiled kernels are loaded before a real one.
+    """Run two tiny crossings and their sections (each model once, and a batch), so that the
+    compiled kernels are loaded before a real report.
 
     A fresh process loads numba's cached machine code on first call (about two seconds);
     the report runner has its kernel call this first, while it prepares the rest.
     """
-    from .. import units as u
-    from .inputs import prepare
-    from .parameters import read_parameters
+    from ..vehicles import Vehicle
+    from ..vehicles.fleet import hs20
 
-    tiny = read_parameters(
-        {
-            "bridge": {"span": "10 m", "EI": "2e9 N*m**2", "mass_per_length": "5 t/m"},
-            "vehicle": {"mass": "20 t", "frequency": "3 Hz"},
-            "profile": {"approach_length": "10 m", "spacing": "0.1 m"},
-            "speeds": ["50 km/h"],
-            "quick": True,
-        }
-    )
-    inputs = prepare(tiny)
-    analysis = analyse(inputs)
-    del analysis, u
+    road = Profile.flat(50.0, 0.1)
+    one = Bridge(10.0, 1, 2e9, 5000.0)
+    truck = Vehicle.from_frequency(2e4, 3.0, 0.1)
+    quiet(simulate, one, truck, road, 14.0, 12.0)[0].sections([5.0])
+    quiet(simulate_many, one, truck, [road, road], [14.0, 15.0], 12.0)
+    two = Bridge.continuous([10.0, 12.0], EI=2e9, mass_per_length=5000.0)
+    run, _ = quiet(simulate, two, hs20(), road, 14.0, 12.0, model="modal", modes=2)
+    run.sections([5.0, 10.0, 10.0], side=("left", "left", "right"))
+    field_envelope(two.spans, two.EI, [1.0, 2.0], [0.0, 3.0], count=11)

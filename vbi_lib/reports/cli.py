@@ -2,13 +2,16 @@
 
 Exit status 0 when every report is written, 2 for input that cannot be used (a parameter, a
 parameter file, the output folder; nothing has run), 1 when a report fails while running,
-130 on SIGINT and 143 on SIGTERM.  Every failure prints one line and no traceback, and
-leaves nothing behind (see :mod:`vbi_lib.reports.running`).
+130 on SIGINT, 143 on SIGTERM and 129 on SIGHUP (the terminal or ssh session closed).  Every
+failure prints one line and no traceback, and leaves nothing behind (see
+:mod:`vbi_lib.reports.running`).  A report whose inputs look like a slip (a unit) is written,
+and each such warning printed on stderr as ``vbi-report: warning: NAME: ...``.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 
 from .parameters import ParameterError
@@ -17,7 +20,7 @@ from .running import OutputError, ReportFailed, Terminated, signals_raise, write
 __all__ = ["main"]
 
 EPILOG = """\
-example parameter file (every dimensional value is one number and one unit):
+example parameter files (every dimensional value is one number and one unit):
 
   title: I-76 span 3
   bridge: {span: 140 ft, k_mid: 222278 lbf/in, first_frequency: 2.08 Hz}
@@ -25,8 +28,16 @@ example parameter file (every dimensional value is one number and one unit):
   profile: {file: deck.csv, length_unit: inch}
   speeds: [30 mph, 70 mph]
 
-Each PARAMS.yaml gives DIR/PARAMS.html and DIR/PARAMS.pdf; several files share one kernel.
-More examples: the repository's examples/ folder.
+  title: Three spans under the HS20
+  bridge: {spans: [90 ft, 120 ft, 90 ft], EI: 5.3e11 kip*in**2, mass_per_length: 11 kip/ft}
+  vehicle: {type: hs20, rear_axle_spacing: [14 ft, 30 ft]}
+  profile: {iso_class: B, seed: 7}
+  speeds: [35 mph, 55 mph, 70 mph]
+
+Each PARAMS.yaml gives DIR/PARAMS.html, DIR/PARAMS.pdf and the results as data,
+DIR/PARAMS.json and DIR/PARAMS.csv; several files share one kernel.  Vehicle types:
+sprung-mass (default), quarter-car, hs20, hl93-truck, hl93-tandem, axles.  More examples and
+every key: the repository's examples/ folder.
 """
 
 
@@ -47,7 +58,8 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _fail(message: str, status: int) -> int:
-    print(f"vbi-report: {message}", file=sys.stderr)
+    with contextlib.suppress(OSError):  # after SIGHUP the terminal may be gone
+        print(f"vbi-report: {message}", file=sys.stderr)
     return status
 
 
@@ -74,12 +86,16 @@ def main(argv: list[str] | None = None) -> int:
             return _fail(f"failed: {error}; nothing written", 1)
         except KeyboardInterrupt:
             return _fail("interrupted (SIGINT); nothing written", 130)
-        except Terminated:
+        except Terminated as stop:
+            if stop.signal_name == "SIGHUP":
+                return _fail("hung up (SIGHUP); nothing written", 129)
             return _fail("terminated (SIGTERM); nothing written", 143)
         except Exception as error:  # anything unforeseen: one line, never a traceback
             return _fail(f"failed: {type(error).__name__}: {error}; nothing written", 1)
     for report in files:
-        print(report.html)
-        if report.pdf is not None:
-            print(report.pdf)
+        for warning in report.warnings:
+            _fail(f"warning: {report.html.stem}: {warning}", 0)
+        for path in (report.html, report.pdf, report.json, report.csv):
+            if path is not None:
+                print(path)
     return 0

@@ -48,6 +48,9 @@ class Kernel:
 
     def start(self) -> None:
         env = dict(os.environ, TMPDIR=str(self.work / "tmp"), PYDEVD_DISABLE_FILE_VALIDATION="1")
+        # the reports' matrix products are small (time steps x a few modes): OpenBLAS's
+        # threads only cost, several times over on a shared machine
+        env.setdefault("OPENBLAS_NUM_THREADS", "1")
         env.pop("JPY_PARENT_PID", None)
         self.log = open(self.work / "kernel.log", "wb")  # noqa: SIM115 (closed in stop)
         self.km.start_kernel(

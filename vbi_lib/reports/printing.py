@@ -1,7 +1,8 @@
 """Printing a report's HTML to PDF with Debian's chromium, headless, in the background.
 
 Chromium runs with switches that fetch nothing and skip first-run work, with its profile and
-temporary files in the run's folder and in its own session, so it can be killed whole.
+temporary files in a short folder of the run's and in its own session, so it can be killed
+whole.
 """
 
 from __future__ import annotations
@@ -11,6 +12,7 @@ import os
 import shutil
 import signal
 import subprocess
+import tempfile
 from pathlib import Path
 
 from .kernel import ReportFailed
@@ -45,24 +47,29 @@ def find_chromium() -> str | None:
 class Printer:
     """Chromium printing one report's HTML to PDF, in the background (its own profile folder).
 
-    Printing one report overlaps with the kernel running the next; :meth:`wait` collects it.
+    ``folder`` holds chromium's profile and temporary files; its path must be short (the
+    Unix sockets chromium makes there allow 108 bytes; see
+    :func:`vbi_lib.reports.running.short_folder`).  Printing one report overlaps with the
+    kernel running the next; :meth:`wait` collects it.
     """
 
-    def __init__(self, html: Path, pdf: Path, work: Path) -> None:
+    def __init__(self, html: Path, pdf: Path, folder: Path) -> None:
         self.html, self.pdf = html, pdf
+        own = Path(tempfile.mkdtemp(prefix="p", dir=folder))
+        (own / "t").mkdir()
         command = [
             find_chromium() or "chromium",
             *CHROMIUM_ARGS,
-            f"--user-data-dir={work / ('chromium-' + html.stem)}",
+            f"--user-data-dir={own / 'u'}",
             f"--print-to-pdf={pdf}",
             html.as_uri(),
         ]
-        self.errors = open(work / f"chromium-{html.stem}.log", "wb")  # noqa: SIM115
+        self.errors = open(own / "log", "wb")  # noqa: SIM115
         self.process = subprocess.Popen(
             command,
             stdout=subprocess.DEVNULL,
             stderr=self.errors,
-            env=dict(os.environ, TMPDIR=str(work / "tmp")),
+            env=dict(os.environ, TMPDIR=str(own / "t")),
             start_new_session=True,
         )
 

@@ -1,9 +1,15 @@
-"""The report's text and tables as HTML: every value formatted, every user text escaped.
+"""The report's text, tables and figures as HTML: every value formatted, every user text escaped.
 
 Values are shown in the report's display system (:func:`use_units`: the user's US customary
 units with SI alongside, or SI alone); numbers keep three significant digits (whole numbers
 in full), never ``30.000000``.  Everything the user wrote (title, file names, parameters)
 passes through :func:`html.escape` before it reaches the page.
+
+Each section of the report is one block (:func:`block`): its heading, its text, its tables
+and its figures (:mod:`.figures`: inline SVG, scaled to the page's width) in one
+``<section>`` whose heading a printed page keeps with what follows; wide tables are cut into
+parts that fit the page.  Here: the title, the summary, the DAF tables, the tyres' flights;
+the inputs, the road, the limits and the provenance are :mod:`.appendix`'s.
 """
 
 from __future__ import annotations
@@ -11,35 +17,32 @@ from __future__ import annotations
 import datetime as _dt
 import html
 import math
-import platform
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 
 import numpy as np
-import yaml
 
 from .. import display
-from ..bridges import shape_function_error
-from ..profiles import max_sample_spacing
-from ..roughness import IN_PER_MI
+from ..beam_statics import QUANTITY
+from ..units import ft
+from ..vehicles import as_system
 from .analysis import ReportAnalysis
 from .inputs import ReportInputs
 
 __all__ = [
+    "block",
     "daf_html",
-    "inputs_html",
-    "notes_html",
+    "flights_html",
     "number",
     "position_html",
-    "provenance_html",
     "quantity",
-    "road_html",
+    "sections_html",
     "summary_html",
     "title_html",
     "use_units",
 ]
 
-#: Highest bridge frequency the road's sampling must resolve, at least (study rule 32).
-MIN_RESOLVED_HZ = 15.0
+#: Most speed columns in one table (wider tables are cut into parts).
+SPEEDS_PER_TABLE = 6
 
 
 def use_units(inputs: ReportInputs) -> None:
@@ -104,8 +107,37 @@ def _table(header: Iterable[str], rows: Iterable[Iterable[str]], css: str) -> st
     )
 
 
+def block(heading: str, *parts: str, css: str = "") -> str:
+    """One section of the report: ``<h2>`` and its parts (HTML), printed together."""
+    return (
+        f'<section class="vbi-block {css}"><h2>{_e(heading)}</h2>' + "".join(parts) + "</section>"
+    )
+
+
+def _p(text: str, css: str = "") -> str:
+    return f'<p class="{css}">{_e(text)}</p>' if css else f"<p>{_e(text)}</p>"
+
+
 def _speed(speed: float) -> str:
     return quantity(speed, "speed")
+
+
+def _arrow(direction: str) -> str:
+    return "forward" if direction == "forward" else "backward"
+
+
+def _vehicle_name(analysis_or_inputs: object) -> str:
+    inputs = getattr(analysis_or_inputs, "inputs", analysis_or_inputs)
+    kind = inputs.parameters.vehicle.type
+    names = {
+        "sprung-mass": "one truck (the study's sprung mass)",
+        "quarter-car": "one truck as a quarter car (sprung and unsprung mass, a tyre)",
+        "hs20": "the AASHTO HS20 design truck",
+        "hl93-truck": "the AASHTO LRFD (HL-93) design truck",
+        "hl93-tandem": "the AASHTO LRFD (HL-93) design tandem",
+        "axles": "a permit vehicle of its axles",
+    }
+    return names[kind]
 
 
 def title_html(inputs: ReportInputs) -> str:
@@ -113,193 +145,217 @@ def title_html(inputs: ReportInputs) -> str:
     import vbi_lib
 
     today = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d")
+    effects = ", ".join(inputs.effects)
     return (
         f'<h1 class="vbi-title">{_e(inputs.parameters.title)}</h1>'
-        f'<p class="vbi-subtitle">Dynamic amplification factor (DAF) of the midspan deflection '
-        f"under one truck, computed with vbi {_e(vbi_lib.__version__)} on {today}.</p>"
+        f'<p class="vbi-subtitle">Dynamic amplification factor (DAF) of the {_e(effects)} at '
+        f"{len(inputs.places)} places of the bridge under {_e(_vehicle_name(inputs))}, "
+        f"computed with vbi {_e(vbi_lib.__version__)} on {today}.</p>"
     )
 
 
 # ---------------------------------------------------------------------------- summary
 def _verdict(daf: float, allowance: float) -> str:
-    return "exceeds" if daf > allowance else "is within"
+    return f"exceeds {allowance:.2f}" if daf > allowance else f"within {allowance:.2f}"
+
+
+def _short_speed(speed: float) -> str:
+    """A speed in the display unit alone (tables): ``"55 mph"``."""
+    return f"{number(display.value(speed, 'speed'))} {display.symbol('speed')}"
+
+
+def _where(row: object) -> str:
+    text = f"{_short_speed(row.speed_m_s)} {_arrow(row.direction)}"
+    spacing = row.rear_axle_spacing_m
+    if spacing is not None and np.isfinite(spacing):
+        text += f", {number(spacing / ft)} ft rear spacing"
+    return text
 
 
 def _contact_sentence(analysis: ReportAnalysis) -> str:
-    study = analysis.requested
-    lost = study.lost_contact
-    ratios = study.coupled.min_contact_force_ratio
-    if not lost.any():
-        return (
-            "The tyre stayed on the road at every requested speed: the contact force never "
-            f"fell below {number(float(ratios.min()))} times the truck's weight, so the "
-            "model's assumption that the tyre never leaves the road held."
-        )
-    speeds = " and ".join(_speed(v) for v in study.speeds[lost])
-    fell = " and ".join(number(float(r)) for r in ratios[lost])
-    share = " and ".join(f"{f:.1%}" for f in study.coupled.tension_fraction[lost])
-    head = "At every requested speed" if lost.all() else f"At {speeds}"
-    tail = (
-        "No DAF in this report is within the model's validity."
-        if lost.all()
-        else "The DAF at those speeds is outside the model's validity: the tables mark it "
-        "'contact lost' and the largest DAF above leaves it out."
-    )
-    return (
-        f"{head} the tyre would have left the road: the contact force fell to {fell} times "
-        f"the truck's weight (it would have had to pull the road down for {share} of the time "
-        "on the bridge). The model keeps the tyre on the road, so a real truck would have "
-        f"lifted off and landed instead. {tail}"
-    )
+    rows = analysis.sections.rows.drop_duplicates("crossing")
+    lost = rows[rows.lost_contact]
+    system = as_system(analysis.inputs.vehicle)
+    flights = analysis.flights
+    parts = []
+    if lost.empty:
+        if not system.has_unilateral:
+            ratio = float(rows.min_contact_force_ratio.min())
+            parts.append(
+                "The vehicle stayed on the road at every requested speed and direction: no "
+                f"axle's contact force fell below {number(ratio)} times its static load, so "
+                "the model's assumption that the wheels never leave the road held."
+            )
+    else:
+        where = " and ".join(_where(r) for r in lost.itertuples())
+        every = len(lost) == len(rows)
+        parts.append(
+            f"At {where} the contact force became tensile: a real wheel would have lifted "
+            "off, and the model, which keeps it on the road, is outside its validity there. "
+            + ("No DAF in this report is within the model's validity." if every else
+               "Those crossings are marked 'contact lost' and left out of the largest DAFs.")
+        )  # fmt: skip
+    if system.has_unilateral:
+        prints = sorted({number(f * 1000) for f in flights.footprint})
+        footprint = f"each tyre averages the road over a footprint of {' or '.join(prints)} mm"
+        table = flights.table
+        on = table[table.on_bridge] if not table.empty else table
+        if on.empty:
+            parts.append(
+                f"The tyres can leave the road in this model ({footprint}); none did on the "
+                "bridge at the requested speeds."
+            )
+        else:
+            first = on.loc[on.duration_s.fillna(np.inf).idxmax()]
+            parts.append(
+                f"The tyres left the road on the bridge in {len(on)} flights ({footprint}): "
+                f"the longest, axle {first.axle} at {_speed(first.speed_m_s)} "
+                f"{_arrow(first.direction)}, took off at {quantity(first.take_off_m, 'length')} "
+                f"from the first support and stayed off {number(first.duration_s * 1000)} ms. "
+                "A flight is modelled (the tyre lands again), not a loss of validity; the "
+                "section 'The tyres' lists every flight."
+            )
+    return " ".join(parts)
 
 
 def summary_html(analysis: ReportAnalysis) -> str:
-    """Largest DAF per span against the design codes, and the contact check, in plain words."""
+    """The DAF of each effect at each place against the design codes, and the contact check."""
+    study = analysis.sections
     codes = analysis.allowances
-    lrfd = codes.aashto_lrfd
     rows = []
-    for j in range(analysis.inputs.bridge.n_spans):
-        best = analysis.requested.largest(j)
+    for c, col in enumerate(study.columns):
+        best = study.largest(c)
+        code = codes.by_column[c]
+        place = f"{col.label} ({number(display.value(col.place.x, 'length'))} " + (
+            f"{display.symbol('length')})"
+        )  # fmt: skip
         if best is None:
-            study = analysis.requested
-            i = int(np.argmax(study.coupled.daf[:, j]))
-            rows.append([
-                f"span {j + 1}",
-                f"none within the model's validity (the model gives "
-                f"{study.coupled.daf[i, j]:.2f}, with the tyre off the road)",
-                _speed(study.speeds[i]),
-                f"not comparable ({lrfd:.2f})",
-            ])  # fmt: skip
+            some = study.rows[(study.rows.column == c) & study.rows.daf.notna()]
+            got = f"{some.daf.max():.2f}" if not some.empty else "-"
+            rows.append([place, col.effect,
+                         f"none valid (the model gives {got}, contact lost)", "-",
+                         "not comparable", "not comparable", "-", "-"])  # fmt: skip
             continue
-        daf, speed = best
-        rows.append(
-            [f"span {j + 1}", f"{daf:.2f}", _speed(speed), f"{_verdict(daf, lrfd)} {lrfd:.2f}"]
+        rows.append([
+            place,
+            col.effect,
+            f"{best.daf:.2f}",
+            _where(best),
+            _verdict(best.daf, code["AASHTO LRFD"]),
+            _verdict(best.daf, code["AASHTO LRFD fatigue"]),
+            f"{code['AASHTO Standard']:.2f}",
+            f"{code['OHBDC 1983']:.2f}",
+        ])  # fmt: skip
+    header = ["place", "effect", "largest DAF", "at", "LRFD 1 + IM", "LRFD fatigue",
+              "AASHTO Std.", "OHBDC 1983"]  # fmt: skip
+    warnings = ""
+    if analysis.inputs.warnings:
+        items = "".join(f"<li>{_e(w)}</li>" for w in analysis.inputs.warnings)
+        warnings = (
+            '<div class="vbi-warning"><strong>Check these inputs before using the results.'
+            f"</strong><ul>{items}</ul></div>"
         )
-    others = "; ".join(f"{name}: {value:.2f}" for name, value in codes.daf.items())
-    contact = _contact_sentence(analysis)
-    css = "vbi-lost" if analysis.requested.lost_contact.any() else "vbi-kept"
-    return (
-        '<div class="vbi-summary">'
-        + _table(
-            ["", "largest DAF at the requested speeds", "at", "AASHTO LRFD (1 + IM)"],
-            rows,
-            "vbi-largest",
-        )
-        + f"<p>Design values of the DAF for this bridge: {_e(others)}.</p>"
-        + f'<p class="{css}"><strong>Contact.</strong> {_e(contact)}</p>'
-        + "</div>"
+    lost = study.rows.lost_contact.any()
+    css = "vbi-lost" if lost else "vbi-kept"
+    lrfd = codes.aashto_lrfd
+    text = (
+        "The largest DAF of each effect at each place over the requested speeds and "
+        f"directions, against AASHTO LRFD's dynamic load allowance (1 + IM = {lrfd:.2f}, "
+        f"{codes.aashto_fatigue:.2f} for fatigue and fracture; Table 3.6.2.1-1), the AASHTO "
+        "Standard Specifications' impact 50 / (L + 125) <= 0.30 with its loaded length L in "
+        "feet for that place and effect (3.8.2.2) and the Ontario code of 1983 (from the first "
+        "frequency)."
+    )
+    return block(
+        "Summary",
+        warnings,
+        _p(text),
+        _table(header, rows, "vbi-largest vbi-wide"),
+        f'<p class="{css}"><strong>Contact.</strong> {_e(_contact_sentence(analysis))}</p>',
+        css="vbi-summary",
     )
 
 
-# ---------------------------------------------------------------------------- inputs
-_LABELS = {
-    "bridge.span": "span",
-    "bridge.k_mid": "midspan stiffness of the path",
-    "bridge.EI": "flexural rigidity EI",
-    "bridge.mass_per_length": "mass per length",
-    "bridge.first_frequency": "first natural frequency",
-    "bridge.damping_ratio": "bridge damping ratio",
-    "vehicle.mass": "truck sprung mass",
-    "vehicle.frequency": "truck body-bounce frequency",
-    "vehicle.damping_ratio": "truck damping ratio",
-    "profile.bridge_start": "first support, from the file's first point",
-    "profile.approach_length": "approach length",
-    "profile.spacing": "generated road's sample spacing",
-}
+# ---------------------------------------------------------------------------- DAF tables
+def _chunks(items: Sequence, size: int) -> list:
+    return [items[i : i + size] for i in range(0, len(items), size)] or [items]
 
 
-def inputs_html(inputs: ReportInputs) -> str:
-    """The inputs as given (with SI), then the model built from them."""
-    p = inputs.parameters
-    kinds = {"bridge.damping_ratio": None, "vehicle.damping_ratio": None}
-    rows = [["spans", str(p.bridge.n_spans), ""]]
-    for key, text in p.given.items():
-        if key.startswith("speeds"):
+def sections_html(analysis: ReportAnalysis) -> str:
+    """The DAF of each effect at each place, per requested speed and direction."""
+    study = analysis.sections
+    inputs = analysis.inputs
+    rows_all = study.rows
+    runs = [(d, v) for v in inputs.speeds for d in inputs.directions]
+    parts = []
+    for effect in inputs.effects:
+        cols = [c for c, col in enumerate(study.columns) if col.effect == effect]
+        if not cols:
             continue
-        label = _LABELS.get(key, key)
-        si = _si_of(key, inputs)
-        rows.append([label, text, "" if key in kinds else si])
-    rows.append(["speeds", ", ".join(p.given[f"speeds[{i}]"] for i in range(len(p.speeds))),
-                 ", ".join(_si(v, "speed") for v in p.speeds)])  # fmt: skip
-    rows.append(["truck frequency is", "damped" if p.vehicle.damped else "undamped", ""])
-    rows.append(["road", inputs.profile_source, ""])
-    given = _table(["input", "as given", "SI"], rows, "vbi-inputs")
-    b, t = inputs.bridge, inputs.vehicle
-    model = [
-        ["first natural frequency", f"{number(b.first_frequency_hz)} Hz"],
-        ["flexural rigidity EI", quantity(b.EI, "flexural_rigidity")],
-        ["mass per length", quantity(b.mass_per_length, "mass_per_length")],
-        ["generalised mass m*", quantity(b.generalized_mass, "mass")],
-        ["generalised stiffness k*", quantity(b.generalized_stiffness, "stiffness")],
-        ["truck mass", quantity(t.mass, "mass")],
-        ["truck weight", quantity(t.weight, "weight")],
-        ["suspension stiffness", quantity(t.stiffness, "stiffness")],
-        ["suspension damping", quantity(t.damping, "damping")],
-        ["truck frequency (undamped)", f"{number(t.frequency_hz)} Hz"],
-        ["static midspan deflection under the truck's weight",
-         quantity(b.static_deflection(t.weight), "deflection")],
-    ]  # fmt: skip
-    return (
-        given
-        + '<p class="vbi-caption">The model built from them (study equations 82-85):</p>'
-        + _table(["property", "value"], model, "vbi-model")
+        quantity_kind = QUANTITY[effect]
+        unit = display.symbol(quantity_kind)
+        for chunk in _chunks(runs, SPEEDS_PER_TABLE):
+            header = ["place", f"static [{unit}]"] + [
+                f"{_short_speed(v)} {_arrow(d)}" for d, v in chunk
+            ]
+            body = []
+            for c in cols:
+                mine = rows_all[rows_all.column == c]
+                forward = mine[mine.direction == inputs.directions[0]].iloc[0]
+                static = number(display.value(forward.static, quantity_kind))
+                row = [study.columns[c].label, static]
+                for d, v in chunk:
+                    r = mine[(mine.direction == d) & (mine.speed_m_s == v)].iloc[0]
+                    cell = "-" if not np.isfinite(r.daf) else f"{r.daf:.3f}"
+                    if r.lost_contact:
+                        cell += " (contact lost)"
+                    row.append(cell)
+                body.append(row)
+            parts.append(f'<p class="vbi-caption">{_e(effect.capitalize())}:</p>')
+            parts.append(_table(header, body, f"vbi-sections vbi-wide vbi-{effect}"))
+    text = (
+        "Each DAF is the extreme of the effect at that place over the whole crossing, by the "
+        "mode-acceleration method (exact statics plus the modes' dynamics), divided by its "
+        "extreme when the same axle loads crawl across in the same direction, in the sense "
+        "(the largest or the smallest) in which that static extreme is the larger; the static "
+        f"column gives it ({inputs.directions[0]}). Signs: displacement up, moment sagging, "
+        "shear dM/dx with x from the first support. At an interior support the shear is given "
+        "just left and just right of it."
     )
+    spacing = ""
+    if analysis.spacing_search is not None:
+        spacing = _spacing_html(analysis)
+    return block("DAF of each effect at each place", _p(text), spacing, *parts)
 
 
-#: Display kind of each quantity key, for its SI column.
-_KINDS = {
-    "span": "length",
-    "k_mid": "stiffness",
-    "EI": "flexural_rigidity",
-    "mass_per_length": "mass_per_length",
-    "first_frequency": "frequency",
-    "mass": "mass",
-    "frequency": "frequency",
-    "bridge_start": "length",
-    "approach_length": "length",
-    "spacing": "deflection",
-}
-
-
-def _si(value: float, kind: str) -> str:
-    """``value`` [SI] in the SI display unit of ``kind``: ``"42.7 m"``, ``"38,927 kN/m"``."""
-    symbol, size = display.SI.units[kind]
-    return f"{number(value / size)} {symbol}"
-
-
-def _si_of(key: str, inputs: ReportInputs) -> str:
-    section, name = key.split(".", 1)
-    value = getattr(getattr(inputs.parameters, section), name, None)
-    if name not in _KINDS or value is None:
-        return ""
-    return _si(value, _KINDS[name])
-
-
-# ---------------------------------------------------------------------------- road, DAF, position
-def road_html(analysis: ReportAnalysis) -> str:
-    """IRI and ISO 8608 class of each span."""
-    r = analysis.roughness
-    rows = [
-        [name, number(iri), number(iri * IN_PER_MI), number(c10 * 1e6), number(w), cls]
-        for name, iri, c10, w, cls in zip(
-            r.names, r.iri, r.c10, r.waviness, r.iso_class, strict=True
-        )
-    ]
-    notes = "".join(
-        f"<li>{_e(name)}: {_e(why)}</li>"
-        for name, why in zip(r.names, r.reasons, strict=True)
-        if why
+def _spacing_html(analysis: ReportAnalysis) -> str:
+    study = analysis.sections
+    low, high = analysis.inputs.parameters.vehicle.rear_axle_spacing
+    rows, found = [], []
+    for c, col in enumerate(study.columns):
+        spacing = study.rows[study.rows.column == c].rear_axle_spacing_m.iloc[0]
+        found.append(spacing)
+        rows.append([col.label, col.effect, f"{number(spacing / ft)} ft ({number(spacing)} m)"])
+    text = (
+        f"The design truck's rear axle spacing is varied from {number(low / ft)} to "
+        f"{number(high / ft)} ft to produce the extreme force effects (AASHTO LRFD "
+        "3.6.1.2.2): for each place and effect the spacing whose static extreme is the "
+        "largest (every 0.5 ft, exact statics, the directions asked) governs, and the truck "
+        "with that spacing is run."
     )
-    return _table(
-        ["part", "IRI [m/km]", "IRI [in/mi]", "C10 [1e-6 m³]", "waviness", "ISO 8608 class"],
-        rows,
-        "vbi-roughness",
-    ) + (f"<ul>{notes}</ul>" if notes else "")
+    if len(set(found)) == 1:
+        return _p(text + f" Here {number(found[0] / ft)} ft governs every place and effect.")
+    return _p(text) + _table(["place", "effect", "governing rear spacing"], rows, "vbi-spacing")
 
 
 def daf_html(analysis: ReportAnalysis) -> str:
-    """The DAF at each requested speed (coupled, decoupled bound) and the contact checks."""
+    """The study's span DAF at each requested speed (coupled, decoupled bound) and the contact
+    checks (the study's own case), with the design codes' values."""
     study = analysis.requested
+    codes = [[name, f"{value:.2f}"] for name, value in analysis.allowances.daf.items()]
+    codes_table = _table(["design code", "design DAF (1 + IM)"], codes, "vbi-codes")
+    if study is None:
+        return block("Design codes", codes_table)
     n = analysis.inputs.bridge.n_spans
     header = ["speed"]
     for j in range(n):
@@ -317,10 +373,14 @@ def daf_html(analysis: ReportAnalysis) -> str:
         high = number(float(study.coupled.contact_force_amplification[i]), 2)
         row += [f"{low} to {high}", "LOST: outside validity" if lost else "kept"]
         rows.append(row)
-    codes = [[name, f"{value:.2f}"] for name, value in analysis.allowances.daf.items()]
-    return _table(header, rows, "vbi-daf") + _table(
-        ["design code", "design DAF (1 + IM)"], codes, "vbi-codes"
+    text = (
+        "The study's span DAF (its equations 88-91: the largest downward midspan deflection "
+        "over the static one), forward. Coupled: the contact force depends on the bridge's "
+        "motion (the study's model). Decoupled: the truck rides the road as if it were rigid "
+        "and its contact force is applied to the bridge (equations 92-99); the study found it "
+        "a conservative bound."
     )
+    return block("The study's span DAF", _p(text), _table(header, rows, "vbi-daf"), codes_table)
 
 
 def position_html(analysis: ReportAnalysis) -> str:
@@ -328,7 +388,7 @@ def position_html(analysis: ReportAnalysis) -> str:
     study = analysis.position
     rows = []
     for i, speed in enumerate(study.speeds):
-        valid = study.daf[i][~study.lost[i]]
+        valid = study.daf[i][~study.lost[i] & np.isfinite(study.daf[i])]
         spread = f"{valid.min():.2f} to {valid.max():.2f}" if valid.size else "none valid"
         rows.append([_speed(speed), spread, f"{int(study.lost[i].sum())} of {study.offsets.size}"])
     return _table(
@@ -338,87 +398,31 @@ def position_html(analysis: ReportAnalysis) -> str:
     )
 
 
-# ---------------------------------------------------------------------------- limits, provenance
-def notes_html(analysis: ReportAnalysis) -> str:
-    """How the road was assembled and where this case approaches the model's limits."""
-    inputs = analysis.inputs
-    notes = list(inputs.notes)
-    slowest = min(inputs.speeds)
-    resolved = max(MIN_RESOLVED_HZ, 3 * inputs.bridge.first_frequency_hz)
-    s_max = max_sample_spacing(slowest, resolved)
-    spacing = inputs.deck.spacing
-    verdict = "meets" if spacing <= s_max else "does NOT meet"
-    notes.append(
-        f"The deck is sampled every {spacing * 1e3:.1f} mm; rule (32) asks for at most "
-        f"{s_max * 1e3:.0f} mm to resolve {resolved:.0f} Hz at {_speed(slowest)}: the road "
-        f"{verdict} it."
+def flights_html(analysis: ReportAnalysis) -> str:
+    """Every flight of a tyre on the bridge in the requested crossings (or why there are none)."""
+    flights = analysis.flights
+    if not flights.unilateral:
+        return ""
+    table = flights.table
+    on = table[table.on_bridge] if not table.empty else table
+    prints = sorted({number(f * 1000) for f in flights.footprint})
+    text = (
+        "The tyres push on the road but never pull: when a tyre's force would become tensile "
+        "the wheel leaves the road and lands again, which the model follows. Each tyre "
+        f"averages the road over a footprint of {' or '.join(prints)} mm."
     )
-    if inputs.bridge.n_spans == 2:
-        notes.append(
-            "Two spans: the model's one shape function gives a midspan deflection "
-            f"{shape_function_error(2):.0%} smaller than the exact beam under a static load; "
-            "its DAF is a ratio of the model's own deflections."
-        )
-    notes.append(
-        "Integration: classical fourth-order Runge-Kutta on the study's two-degree-of-freedom "
-        "model, a node at every profile sample and support, steps of at most "
-        f"{analysis.worst.dt * 1e3:.2f} ms at the worst requested speed (omega_max dt <= 0.1); "
-        "the DAF changes by far less than 0.1 % when the step halves."
-    )
-    items = "".join(f"<li>{_e(n)}</li>" for n in notes if n)
-    return f'<ul class="vbi-notes">{items}</ul>'
-
-
-def provenance_html(inputs: ReportInputs, source: dict | None) -> str:
-    """vbi version, date, input files and their SHA-256, and every parameter as given."""
-    import vbi_lib
-
-    source = source or {}
-    now = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M:%S UTC")
+    if on.empty:
+        return block("The tyres", _p(text + " No tyre left the road on the bridge."))
     rows = [
-        ["vbi version", vbi_lib.__version__],
-        ["made", now],
-        ["Python", platform.python_version()],
-        ["parameter file", source.get("name") or "none (parameters given directly)"],
-        ["parameter file SHA-256", source.get("sha256") or "-"],
-    ]
-    if inputs.parameters.profile.file is not None:
-        rows += [
-            ["profile file", inputs.parameters.profile.file.name],
-            ["profile file SHA-256", inputs.profile_sha256],
-        ]
-    raw = {k: _plain(v) for k, v in inputs.parameters.raw.items()}
-    text = yaml.safe_dump(raw, sort_keys=False, allow_unicode=True, default_flow_style=False)
-    return (
-        _table(["item", "value"], rows, "vbi-provenance")
-        + '<p class="vbi-caption">Parameters as given:</p>'
-        + f'<pre class="vbi-parameters">{_e(text)}</pre>'
+        [_speed(r.speed_m_s), _arrow(r.direction), str(r.axle),
+         quantity(r.take_off_m, "length"), quantity(r.landing_m, "length"),
+         f"{number(r.duration_s * 1000)} ms"]
+        for r in on.itertuples()
+    ]  # fmt: skip
+    return block(
+        "The tyres",
+        _p(text + " Stations from the first support (forward)."),
+        _table(
+            ["speed", "direction", "axle", "take-off", "landing", "in the air"], rows, "vbi-flights"
+        ),  # fmt: skip
     )
-
-
-def _plain(value: object) -> object:
-    """YAML-safe copy of a parameter value (numpy scalars and paths as plain values)."""
-    if isinstance(value, dict):
-        return {str(k): _plain(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_plain(v) for v in value]
-    if isinstance(value, np.generic):
-        return value.item()
-    if value is None or isinstance(value, bool | int | float | str):
-        return value
-    return str(value)
-
-
-def worst_window(analysis: ReportAnalysis) -> tuple[float, float]:
-    """Stations shown in the worst crossing's plots, in display units: the end of the
-    approach (a quarter of the bridge's length) and the bridge."""
-    length = analysis.inputs.bridge.length
-    return display.value(-0.25 * length, "length"), display.value(1.02 * length, "length")
-
-
-def worst_title(analysis: ReportAnalysis) -> str:
-    """Plot title of the worst requested crossing: its speed and DAF (plain text)."""
-    crossing = analysis.worst
-    dafs = ", ".join(f"{d:.2f}" for d in crossing.daf)
-    lost = " (contact lost: outside validity)" if crossing.lost_contact else ""
-    return f"{_speed(crossing.speed)}: DAF {dafs}{lost}"

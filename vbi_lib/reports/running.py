@@ -1,4 +1,4 @@
-"""Running reports: parameter files in, HTML and PDF files out, nothing left behind otherwise.
+"""Running reports: parameter files in, HTML, PDF and the results as data out, nothing else.
 
 Everything that can be checked is checked before anything runs: every parameter file (read,
 checked and its road assembled, :func:`load_job`), the output folder and the file names in it
@@ -7,13 +7,17 @@ shared by all of them (started once, its namespace reset between reports): the t
 notebook gets the file's parameters in a cell injected after its ``parameters`` cell, as
 papermill does, and its code cells are executed one by one.  Each executed notebook becomes
 self-contained HTML without its code (no script or style is fetched from the network), and
-Debian's chromium prints that HTML to PDF.
+Debian's chromium prints that HTML to PDF.  Beside them go ``NAME.json`` and ``NAME.csv``,
+the results as data (:mod:`.results_file`).
 
-All work happens in a temporary folder (the kernel's and chromium's temporary files too);
-the output folder receives the finished files at the very end, each written beside its final
-name and renamed.  The temporary folder is removed and the kernel and chromium are stopped
-whatever happens: an error, ``KeyboardInterrupt`` (SIGINT) or :class:`Terminated` (SIGTERM,
-once :func:`signals_raise` is in force).
+All work happens in a temporary folder (the kernel's temporary files too); chromium's
+profile and temporary files live in a short folder of their own (:func:`short_folder`), so
+that its socket paths fit the 108 bytes a Unix socket allows whatever the length of
+``TMPDIR``.  The output folder receives the finished files at the very end, each written
+beside its final name and renamed.  The temporary folders are removed and the kernel and
+chromium are stopped whatever happens: an error, ``KeyboardInterrupt`` (SIGINT) or
+:class:`Terminated` (SIGTERM, and SIGHUP when the terminal or ssh session closes, once
+:func:`signals_raise` is in force).
 """
 
 from __future__ import annotations
@@ -21,7 +25,6 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import os
-import re
 import shutil
 import signal
 import tempfile
@@ -32,10 +35,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from .inputs import prepare
 from .kernel import Kernel, ReportFailed
+from .parameter_file import read_parameter_file
 from .parameters import ParameterError, ReportParameters, read_parameters
 from .printing import Printer, find_chromium
 
@@ -48,6 +50,7 @@ __all__ = [
     "check_output",
     "find_chromium",
     "load_job",
+    "short_folder",
     "signals_raise",
     "write_reports",
 ]
@@ -64,15 +67,26 @@ class OutputError(ValueError):
 
 
 class Terminated(BaseException):  # noqa: N818 (a signal, like KeyboardInterrupt)
-    """SIGTERM arrived (see :func:`signals_raise`)."""
+    """SIGTERM or SIGHUP arrived (see :func:`signals_raise`); ``args[0]`` is its name."""
+
+    @property
+    def signal_name(self) -> str:
+        """``"SIGTERM"`` or ``"SIGHUP"``."""
+        return str(self.args[0]) if self.args else "SIGTERM"
+
+
+#: Signals that end a run, and clean up, as :class:`Terminated` (SIGINT: KeyboardInterrupt).
+TERMINATING = tuple(getattr(signal, n) for n in ("SIGTERM", "SIGHUP") if hasattr(signal, n))
 
 
 @contextlib.contextmanager
 def signals_raise() -> Iterator[None]:
-    """While in force, SIGTERM raises :class:`Terminated` (SIGINT raises KeyboardInterrupt).
+    """While in force, SIGTERM and SIGHUP raise :class:`Terminated` (SIGINT raises
+    KeyboardInterrupt).
 
-    So ``finally`` blocks run on both: the kernel and chromium are stopped and the temporary
-    folder removed.  Only in the main thread (elsewhere it does nothing).
+    So ``finally`` blocks run on all three: the kernel and chromium are stopped and the
+    temporary folders removed.  SIGHUP is what a closing terminal or ssh session sends.
+    Only in the main thread (elsewhere it does nothing).
     """
     if threading.current_thread() is not threading.main_thread():
         yield
@@ -81,26 +95,49 @@ def signals_raise() -> Iterator[None]:
     def terminate(signum: int, frame: object) -> None:
         raise Terminated(signal.Signals(signum).name)
 
-    previous = signal.signal(signal.SIGTERM, terminate)
+    previous = {signum: signal.signal(signum, terminate) for signum in TERMINATING}
     previous_int = signal.signal(signal.SIGINT, signal.default_int_handler)
     try:
         yield
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
         signal.signal(signal.SIGINT, previous_int)
 
 
 @contextlib.contextmanager
 def _signals_held() -> Iterator[None]:
-    """SIGINT and SIGTERM wait until the block ends (so clean-up is not cut short)."""
+    """SIGINT, SIGTERM and SIGHUP wait until the block ends (so clean-up is not cut short)."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    previous = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, *TERMINATING})
     try:
         yield
     finally:
         signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+
+
+#: A folder whose path is at most this long is short enough for chromium's sockets.
+SHORT_PATH = 40
+
+
+def short_folder(work: Path) -> Path:
+    """A new folder with a short path for chromium's profile and temporary files.
+
+    Inside ``work`` when its path is short; else in the first of ``/tmp``, ``/var/tmp`` and
+    ``/dev/shm`` that can be written (named ``vbi-PID-...``, removed with the run).
+    """
+    if len(str(work)) <= SHORT_PATH:
+        folder = work / "c"
+        folder.mkdir()
+        return folder
+    for base in ("/tmp", "/var/tmp", "/dev/shm"):  # noqa: S108 (a private mkdtemp folder)
+        if os.path.isdir(base) and os.access(base, os.W_OK | os.X_OK):
+            return Path(tempfile.mkdtemp(prefix=f"vbi-{os.getpid()}-", dir=base))
+    folder = work / "c"  # nowhere short: chromium may fail, and says why
+    folder.mkdir()
+    return folder
 
 
 # ---------------------------------------------------------------------------- jobs
@@ -111,7 +148,7 @@ class ReportJob:
     Attributes
     ----------
     name
-        Stem of the output files (``NAME.html``, ``NAME.pdf``).
+        Stem of the output files (``NAME.html``, ``NAME.pdf``, ``NAME.json``, ``NAME.csv``).
     values
         The parameters as given (what the template receives).
     parameters
@@ -119,12 +156,16 @@ class ReportJob:
     source
         The parameter file's ``name``, ``sha256`` and ``folder`` (relative profile paths are
         read from there).
+    warnings
+        Sentences on inputs that look like a slip (:attr:`ReportInputs.warnings
+        <vbi_lib.reports.inputs.ReportInputs.warnings>`).
     """
 
     name: str
     values: dict[str, Any]
     parameters: ReportParameters = field(repr=False)
     source: dict[str, str]
+    warnings: tuple[str, ...] = ()
 
     @classmethod
     def from_mapping(
@@ -133,40 +174,9 @@ class ReportJob:
         """A job from parameters given in Python (checked now, road assembled now)."""
         folder = Path(base_dir).resolve()
         parameters = read_parameters(values, base_dir=folder)
-        prepare(parameters)
-        return cls(_name(name), dict(values), parameters, {"folder": str(folder)})
-
-
-class _UniqueKeyLoader(yaml.SafeLoader):
-    """YAML's safe loader that refuses a key given twice in one mapping, and reads only
-    ``true`` and ``false`` as booleans (YAML 1.2): YAML 1.1's ``yes``, ``no``, ``on`` and
-    ``off`` stay text, which a boolean parameter then refuses by name."""
-
-
-# YAML 1.1 resolves yes/no/on/off to booleans; keep every other implicit type of the safe
-# loader and give booleans YAML 1.2's spelling only
-_UniqueKeyLoader.yaml_implicit_resolvers = {
-    first: [(tag, regexp) for tag, regexp in resolvers if tag != "tag:yaml.org,2002:bool"]
-    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
-}
-_UniqueKeyLoader.add_implicit_resolver(
-    "tag:yaml.org,2002:bool", re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"), list("tTfF")
-)
-
-
-def _mapping(loader: _UniqueKeyLoader, node: yaml.MappingNode) -> dict:
-    seen: dict[object, int] = {}
-    for key_node, _ in node.value:
-        key = loader.construct_object(key_node)
-        if key in seen:
-            raise yaml.constructor.ConstructorError(
-                None, None, f"key {key!r} is given twice", key_node.start_mark
-            )
-        seen[key] = key_node.start_mark.line
-    return loader.construct_mapping(node)
-
-
-_UniqueKeyLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _mapping)
+        inputs = prepare(parameters)
+        return cls(_name(name), dict(values), parameters, {"folder": str(folder)},
+                   inputs.warnings)  # fmt: skip
 
 
 def _name(stem: str) -> str:
@@ -185,24 +195,10 @@ def load_job(path: str | Path) -> ReportJob:
         message starts with the file's name.
     """
     path = Path(path)
-    try:
-        data = path.read_bytes()
-    except OSError as error:
-        raise ParameterError("", path, f"{path}: cannot be read ({error.strerror})") from None
-    try:
-        values = yaml.load(data.decode("utf-8-sig"), Loader=_UniqueKeyLoader)  # noqa: S506
-    except UnicodeDecodeError:
-        raise ParameterError("", path, f"{path}: is not a UTF-8 text file") from None
-    except yaml.YAMLError as error:
-        mark = getattr(error, "problem_mark", None)
-        where = f", line {mark.line + 1}, column {mark.column + 1}" if mark else ""
-        problem = getattr(error, "problem", None) or str(error)
-        raise ParameterError("", path, f"{path}{where}: not valid YAML ({problem})") from None
-    if values is None:
-        values = {}
+    values, data = read_parameter_file(path)
     try:
         parameters = read_parameters(values, base_dir=path.parent.resolve())
-        prepare(parameters)
+        inputs = prepare(parameters)
     except ParameterError as error:
         raise ParameterError(error.key, error.value, "", message=f"{path}: {error}") from None
     source = {
@@ -210,16 +206,20 @@ def load_job(path: str | Path) -> ReportJob:
         "sha256": hashlib.sha256(data).hexdigest(),
         "folder": str(path.parent.resolve()),
     }
-    return ReportJob(_name(path.stem), dict(values), parameters, source)
+    return ReportJob(_name(path.stem), dict(values), parameters, source, inputs.warnings)
 
 
 # ---------------------------------------------------------------------------- output
 @dataclass(frozen=True)
 class ReportFiles:
-    """The files one report wrote: its HTML and, unless turned off, its PDF."""
+    """The files one report wrote: its HTML, its PDF (unless turned off) and its results as
+    data (``NAME.json`` and ``NAME.csv``), and the warnings on its inputs."""
 
     html: Path
     pdf: Path | None
+    json: Path | None = None
+    csv: Path | None = None
+    warnings: tuple[str, ...] = ()
 
 
 def check_output(output_dir: str | Path, names: Sequence[str], pdf: bool) -> Path:
@@ -247,7 +247,7 @@ def check_output(output_dir: str | Path, names: Sequence[str], pdf: bool) -> Pat
                 "other; rename one"
             )
         seen.add(name)
-        for suffix in (".html", ".pdf") if pdf else (".html",):
+        for suffix in (".html", ".json", ".csv", ".pdf") if pdf else (".html", ".json", ".csv"):
             target = folder / f"{name}{suffix}"
             if target.is_dir():
                 raise OutputError(f"{target} is a folder; the report cannot be written there")
@@ -265,9 +265,9 @@ def _execute(kernel: Kernel, job: ReportJob, timeout: float) -> Any:
     from papermill.parameterize import parameterize_notebook
 
     notebook = load_notebook_node(str(TEMPLATE))
-    notebook = parameterize_notebook(
-        notebook, {**job.values, "source": job.source}, kernel_name="python3", language="python"
-    )
+    results = str(work_out(kernel) / f"{job.name}.json")
+    parameters = {**job.values, "source": job.source, "results_file": results}
+    notebook = parameterize_notebook(notebook, parameters, kernel_name="python3", language="python")
     kernel.run("%reset -f", timeout)
     for index, cell in enumerate(notebook.cells):
         if cell.cell_type != "code":
@@ -278,6 +278,11 @@ def _execute(kernel: Kernel, job: ReportJob, timeout: float) -> Any:
             raise ReportFailed(f"{job.source.get('name', job.name)}: {error}") from None
         cell.execution_count = index
     return notebook
+
+
+def work_out(kernel: Kernel) -> Path:
+    """The run's folder of finished files (beside the kernel's work folder)."""
+    return kernel.work / "out"
 
 
 def _html(notebook: Any, job: ReportJob) -> str:
@@ -345,7 +350,8 @@ def write_reports(
     Returns
     -------
     list of ReportFiles
-        In the order of ``sources``.
+        In the order of ``sources``: ``NAME.html``, ``NAME.pdf``, ``NAME.json`` and
+        ``NAME.csv`` in ``output_dir``.
 
     Raises
     ------
@@ -359,6 +365,7 @@ def write_reports(
     work = Path(tempfile.mkdtemp(prefix="vbi-report-"))
     kernel = None
     printers: list[Printer] = []
+    short: Path | None = None
     try:
         (work / "tmp").mkdir()
         (work / "out").mkdir()
@@ -368,6 +375,8 @@ def write_reports(
         kernel = Kernel(work)
         kernel.start()
         threading.Thread(target=_preload, daemon=True).start()
+        if pdf:
+            short = short_folder(work)
         kernel.ready()
         files: list[tuple[Path, Path]] = []
         results = []
@@ -376,12 +385,18 @@ def write_reports(
             html = work / "out" / f"{job.name}.html"
             html.write_text(_html(notebook, job), encoding="utf-8")
             files.append((html, folder / html.name))
+            data = [work / "out" / f"{job.name}{suffix}" for suffix in (".json", ".csv")]
+            for made in data:
+                if not made.is_file():
+                    raise ReportFailed(f"{job.name}: the report wrote no {made.name}")
+                files.append((made, folder / made.name))
             target_pdf = None
             if pdf:
-                printers.append(Printer(html, html.with_suffix(".pdf"), work))
+                printers.append(Printer(html, html.with_suffix(".pdf"), short))
                 target_pdf = folder / f"{job.name}.pdf"
                 files.append((html.with_suffix(".pdf"), target_pdf))
-            results.append(ReportFiles(folder / html.name, target_pdf))
+            results.append(ReportFiles(folder / html.name, target_pdf, folder / data[0].name,
+                                       folder / data[1].name, job.warnings))  # fmt: skip
         kernel.stop()
         kernel = None
         for printer in printers:
@@ -394,8 +409,10 @@ def write_reports(
                 printer.stop()
             if kernel is not None:
                 kernel.stop()
-            shutil.rmtree(work, ignore_errors=True)
-            _wait_gone(work)
+            for folder_ in (work, short):
+                if folder_ is not None:
+                    shutil.rmtree(folder_, ignore_errors=True)
+                    _wait_gone(folder_)
 
 
 def _preload() -> None:

@@ -8,11 +8,23 @@ type is data, not a kernel.
 * :class:`QuarterCar`: sprung and unsprung masses, a tyre that can leave the road.
 * :class:`Axle`, :class:`Tyre`, :class:`IndependentAxles`, :class:`RigidTruck`: several
   axles as independent sprung masses or as one body with bounce and pitch.
-* :class:`Convoy`: several vehicles at fixed headways; :func:`hs20`: AASHTO's design truck.
+* :class:`Convoy`: several vehicles at fixed headways; :func:`hs20`, :func:`hl93_truck`,
+  :func:`hl93_tandem`: AASHTO's design truck and tandem; :func:`permit_vehicle`: any axles;
+  :func:`governing_rear_spacing`: the design truck's rear spacing that governs a section.
 * :func:`seen_by_tyre`: the road averaged over a tyre's footprint (:mod:`.footprint`).
 """
 
-from .fleet import HS20_AXLE_LOADS, Convoy, hs20
+from .fleet import (
+    HL93_TANDEM_AXLE_LOADS,
+    HS20_AXLE_LOADS,
+    Convoy,
+    RearSpacingSearch,
+    governing_rear_spacing,
+    hl93_tandem,
+    hl93_truck,
+    hs20,
+    permit_vehicle,
+)
 from .footprint import DEFAULT_FOOTPRINT, footprint_average, seen_by_tyre
 from .sprung_mass import Vehicle
 from .system import VehicleSystem, as_system, stack
@@ -20,18 +32,24 @@ from .trucks import Axle, IndependentAxles, QuarterCar, RigidTruck, Tyre
 
 __all__ = [
     "DEFAULT_FOOTPRINT",
+    "HL93_TANDEM_AXLE_LOADS",
     "HS20_AXLE_LOADS",
     "Axle",
     "Convoy",
     "IndependentAxles",
     "QuarterCar",
+    "RearSpacingSearch",
     "RigidTruck",
     "Tyre",
     "Vehicle",
     "VehicleSystem",
     "as_system",
     "footprint_average",
+    "governing_rear_spacing",
+    "hl93_tandem",
+    "hl93_truck",
     "hs20",
+    "permit_vehicle",
     "seen_by_tyre",
     "stack",
 ]
