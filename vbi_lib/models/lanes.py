@@ -151,9 +151,10 @@ def start_summaries(state, first, n_spans, lane):
 
 
 # rows of a lane kernel's state after the summary: a step whose midspan rate changes sign,
-# kept for the refinement of its peak
+# kept for the refinement of its peak; one set of P_SET rows per span (span 2's after span 1's)
 P_TURN, P_M0, P_M1, P_V0, P_V1, P_H, P_SPAN = range(7)
-P_COUNT = 7
+P_SET = 7
+P_COUNT = 2 * P_SET
 
 
 @numba.njit(cache=True, inline="always")
@@ -163,7 +164,8 @@ def track_peak(state, first, lane, on, span_index, m0, m1, v0, v1, h):
     The larger downward end value is kept at once; a step where the rate changes sign is
     marked in the rows after the summary (``first + SUMMARY_SIZE + P_*``) for
     :func:`refine_peaks`, which finds the extreme inside it.  ``span_index`` is 0 for span 1,
-    1 for span 2.
+    1 for span 2; each span has its own marked step, so that a kernel tracks both midspans
+    at every step (the span DAF reads the whole run).
     """
     turn = on & (v0 * v1 <= 0.0)
     peak = -m0 if -m0 >= -m1 else -m1
@@ -174,7 +176,7 @@ def track_peak(state, first, lane, on, span_index, m0, m1, v0, v1, h):
     keep = on & (not turn)
     state[i1] = peak if keep & (span_index == 0.0) & (peak > p1) else p1
     state[i2] = peak if keep & (span_index == 1.0) & (peak > p2) else p2
-    pending = first + SUMMARY_SIZE
+    pending = first + SUMMARY_SIZE + (P_SET if span_index == 1.0 else 0)
     state[(pending + P_TURN) * LANES + lane] = 1.0 if turn else 0.0
     state[(pending + P_M0) * LANES + lane] = m0
     state[(pending + P_M1) * LANES + lane] = m1
@@ -191,19 +193,20 @@ def refine_peaks(state, first):
     As ``downward_peak`` of the base module, whose functions it calls; few steps are marked
     (a midspan rate changes sign about twice a period), so this loop is rarely busy.
     """
-    pending = first + SUMMARY_SIZE
-    for lane in range(LANES):
-        if state[(pending + P_TURN) * LANES + lane] > 0.0:
-            peak = -hermite_min(
-                state[(pending + P_M0) * LANES + lane],
-                state[(pending + P_M1) * LANES + lane],
-                state[(pending + P_V0) * LANES + lane],
-                state[(pending + P_V1) * LANES + lane],
-                state[(pending + P_H) * LANES + lane],
-            )
-            i = (first + S_PEAK + np.int64(state[(pending + P_SPAN) * LANES + lane])) * LANES
-            if peak > state[i + lane]:
-                state[i + lane] = peak
+    for span in range(2):
+        pending = first + SUMMARY_SIZE + span * P_SET
+        for lane in range(LANES):
+            if state[(pending + P_TURN) * LANES + lane] > 0.0:
+                peak = -hermite_min(
+                    state[(pending + P_M0) * LANES + lane],
+                    state[(pending + P_M1) * LANES + lane],
+                    state[(pending + P_V0) * LANES + lane],
+                    state[(pending + P_V1) * LANES + lane],
+                    state[(pending + P_H) * LANES + lane],
+                )
+                i = (first + S_PEAK + span) * LANES
+                if peak > state[i + lane]:
+                    state[i + lane] = peak
 
 
 @numba.njit(cache=True, inline="always")
