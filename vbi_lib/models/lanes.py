@@ -167,7 +167,8 @@ def track_peak(state, first, lane, on, span_index, m0, m1, v0, v1, h):
     1 for span 2; each span has its own marked step, so that a kernel tracks both midspans
     at every step (the span DAF reads the whole run).
     """
-    turn = on & (v0 * v1 <= 0.0)
+    # (both rates zero, as at rest on the approach: no extreme inside the step)
+    turn = on & (v0 * v1 <= 0.0) & ((v0 != 0.0) | (v1 != 0.0))
     peak = -m0 if -m0 >= -m1 else -m1
     i1 = (first + S_PEAK) * LANES + lane
     i2 = (first + S_PEAK + 1) * LANES + lane
@@ -187,26 +188,63 @@ def track_peak(state, first, lane, on, span_index, m0, m1, v0, v1, h):
 
 
 @numba.njit(cache=True, inline="always")
-def refine_peaks(state, first):
+def track_peak_pair(state, first, lane, on, m0, m1, v0, v1, h):
+    """:func:`track_peak` of span 1 with ``m0, m1, v0, v1`` and of span 2 with their
+    negatives (the one-coordinate beam's midspans, ``+z_b`` and ``-z_b``): both turn in the
+    same steps, so one marked step serves both (``P_SPAN`` 2)."""
+    # (both rates zero, as at rest on the approach: no extreme inside the step)
+    turn = on & (v0 * v1 <= 0.0) & ((v0 != 0.0) | (v1 != 0.0))
+    keep = on & (not turn)
+    down = -m0 if -m0 >= -m1 else -m1
+    up = m0 if m0 >= m1 else m1
+    i1 = (first + S_PEAK) * LANES + lane
+    i2 = (first + S_PEAK + 1) * LANES + lane
+    p1 = state[i1]
+    p2 = state[i2]
+    state[i1] = down if keep & (down > p1) else p1
+    state[i2] = up if keep & (up > p2) else p2
+    pending = first + SUMMARY_SIZE
+    state[(pending + P_TURN) * LANES + lane] = 1.0 if turn else 0.0
+    state[(pending + P_M0) * LANES + lane] = m0
+    state[(pending + P_M1) * LANES + lane] = m1
+    state[(pending + P_V0) * LANES + lane] = v0
+    state[(pending + P_V1) * LANES + lane] = v1
+    state[(pending + P_H) * LANES + lane] = h
+    state[(pending + P_SPAN) * LANES + lane] = 2.0
+
+
+@numba.njit(cache=True, inline="always")
+def refine_peaks(state, first, sets=2):
     """The peaks of the steps :func:`track_peak` marked: the cubic Hermite's extreme inside.
 
     As ``downward_peak`` of the base module, whose functions it calls; few steps are marked
     (a midspan rate changes sign about twice a period), so this loop is rarely busy.
+    ``sets``: the marked-step sets in use (1: :func:`track_peak_pair` only).
     """
-    for span in range(2):
+    for span in range(sets):
         pending = first + SUMMARY_SIZE + span * P_SET
+        marked = False  # a packed test of the lanes first: most steps mark none
+        for lane in range(LANES):
+            marked = marked | (state[(pending + P_TURN) * LANES + lane] > 0.0)
+        if not marked:
+            continue
         for lane in range(LANES):
             if state[(pending + P_TURN) * LANES + lane] > 0.0:
-                peak = -hermite_min(
-                    state[(pending + P_M0) * LANES + lane],
-                    state[(pending + P_M1) * LANES + lane],
-                    state[(pending + P_V0) * LANES + lane],
-                    state[(pending + P_V1) * LANES + lane],
-                    state[(pending + P_H) * LANES + lane],
-                )
+                m0 = state[(pending + P_M0) * LANES + lane]
+                m1 = state[(pending + P_M1) * LANES + lane]
+                v0 = state[(pending + P_V0) * LANES + lane]
+                v1 = state[(pending + P_V1) * LANES + lane]
+                h = state[(pending + P_H) * LANES + lane]
+                pair = state[(pending + P_SPAN) * LANES + lane] == 2.0
                 i = (first + S_PEAK + span) * LANES
+                peak = -hermite_min(m0, m1, v0, v1, h)
                 if peak > state[i + lane]:
                     state[i + lane] = peak
+                if pair:  # track_peak_pair: span 2 is the negative of span 1
+                    i = (first + S_PEAK + 1) * LANES
+                    peak = -hermite_min(-m0, -m1, -v0, -v1, h)
+                    if peak > state[i + lane]:
+                        state[i + lane] = peak
 
 
 @numba.njit(cache=True, inline="always")

@@ -15,9 +15,12 @@ is the study's :class:`~vbi_lib.Vehicle`.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numba
 import numpy as np
 
+from ..bridges import Bridge
 from ..modes import beam_modes, shape_values
 from ..units import g as GRAVITY
 from .base import SUMMARY_SIZE
@@ -349,13 +352,16 @@ def _step(r, rows, nodes, shapes, const, y, z, n_modes):
 def _influence(const, lane, j, s):
     """The exact downward deflection of midspan ``j`` under a unit load at ``s`` [m/N]."""
     base = K_PIECES + j * I_COUNT
-    b1 = const[_k(base + I_BREAK + 1, lane)]
-    b2 = const[_k(base + I_BREAK + 2, lane)]
-    k = 0 if s < b1 else (1 if s < b2 else 2)
-    u = (s - const[_k(base + I_BREAK + k, lane)]) * const[_k(base + I_WIDTH + k, lane)]
-    c = base + I_CUBIC + 4 * k
-    return ((const[_k(c + 3, lane)] * u + const[_k(c + 2, lane)]) * u
-            + const[_k(c + 1, lane)]) * u + const[_k(c, lane)]  # fmt: skip
+    # every piece evaluated, then the one holding s picked: no gather, so the lanes stay packed
+    values = 0.0
+    for k in range(3):
+        u = (s - const[_k(base + I_BREAK + k, lane)]) * const[_k(base + I_WIDTH + k, lane)]
+        c = base + I_CUBIC + 4 * k
+        value = ((const[_k(c + 3, lane)] * u + const[_k(c + 2, lane)]) * u
+                 + const[_k(c + 1, lane)]) * u + const[_k(c, lane)]  # fmt: skip
+        start = const[_k(base + I_BREAK + k, lane)]
+        values = value if (k == 0) | (s >= start) else values
+    return values
 
 
 @numba.njit(cache=True, inline="always", error_model="numpy", fastmath=CONTRACT)
@@ -481,6 +487,25 @@ def _run_serial(blocks, px, pe, roads, table, counts, designs, summaries, widest
         _block(blocks[b], px, pe, roads, table, counts, designs, summaries, widest)
 
 
+@lru_cache(maxsize=1024)
+def _pieces_row(bridge: Bridge) -> np.ndarray:
+    """The table's influence columns of a bridge: the exact influence line of each midspan
+    in cubic pieces (:func:`~vbi_lib.models.statics.influence_pieces`) padded to three
+    pieces a span; a one-span bridge's second span is zero."""
+    row = np.zeros(2 * I_COUNT)
+    breaks, cubics = influence_pieces(bridge)
+    for j in range(bridge.n_spans):
+        part = row[j * I_COUNT : (j + 1) * I_COUNT]
+        b = np.full(4, breaks[j, -1])
+        b[: breaks.shape[1]] = breaks[j]
+        part[I_BREAK : I_BREAK + 4] = b
+        width = np.diff(b)
+        part[I_WIDTH : I_WIDTH + 3] = np.divide(1.0, width, out=np.zeros(3), where=width > 0)
+        part[I_CUBIC : I_CUBIC + 4 * cubics.shape[1]] = cubics[j].ravel()
+    row.setflags(write=False)
+    return row
+
+
 def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
     """Summaries ``(n, SUMMARY_SIZE)`` and largest steps ``(n,)`` [s] of a batch.
 
@@ -524,19 +549,7 @@ def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
         designs[d, M_EXP, :count] = exps
         designs[d, M_G1, :count] = mid[0] / basis.omega**2
         designs[d, M_G2, :count] = (mid[1] if bridge.n_spans > 1 else 0.0) / basis.omega**2
-    # the exact influence line of each midspan in cubic pieces, per bridge (the second span's
-    # of a one-span bridge: zero)
-    pieces = np.zeros((len(batch.bridges), 2 * I_COUNT))
-    for k, bridge in enumerate(batch.bridges):
-        breaks, cubics = influence_pieces(bridge)
-        for j in range(bridge.n_spans):
-            row = pieces[k, j * I_COUNT : (j + 1) * I_COUNT]
-            b = np.full(4, breaks[j, -1])
-            b[: breaks.shape[1]] = breaks[j]
-            row[I_BREAK : I_BREAK + 4] = b
-            width = np.diff(b)
-            row[I_WIDTH : I_WIDTH + 3] = np.divide(1.0, width, out=np.zeros(3), where=width > 0)
-            row[I_CUBIC : I_CUBIC + 4 * cubics.shape[1]] = cubics[j].ravel()
+    pieces = np.array([_pieces_row(bridge) for bridge in batch.bridges])
     table[:, T_PIECES:] = pieces[batch.bridge]
     # a block holds one number of modes
     return launch((_run, _run_serial), batch, table, batch.modes, counts, designs)

@@ -339,15 +339,16 @@ def default_modes(bridge: Bridge) -> int:
     return max(1, count_below(reach, list(bridge.spans)))
 
 
-def missing_spans(bridge: Bridge, basis: BeamModes) -> list[int]:
-    """Spans (1-based) with none of their own modes in ``basis``: no mode whose midspan
-    amplitude there is at least half its largest midspan amplitude."""
-    phi = np.abs(basis.shape(np.array(bridge.midspans)))  # (n_spans, N)
+@lru_cache(maxsize=1024)
+def missing_spans(bridge: Bridge, count: int) -> tuple[int, ...]:
+    """Spans (1-based) with none of their own modes among the first ``count``: no mode
+    whose midspan amplitude there is at least half its largest midspan amplitude."""
+    phi = np.abs(beam_modes(bridge, count).shape(np.array(bridge.midspans)))  # (n_spans, N)
     own = phi >= 0.5 * phi.max(axis=0, keepdims=True)
-    return [j + 1 for j in range(bridge.n_spans) if not own[j].any()]
+    return tuple(j + 1 for j in range(bridge.n_spans) if not own[j].any())
 
 
-def missing_note(spans: list[int], count: int) -> str:
+def missing_note(spans: tuple[int, ...], count: int) -> str:
     """The sentence on spans whose own fundamental ``modes`` leaves out."""
     which = ", ".join(str(j) for j in spans)
     return (
@@ -423,7 +424,7 @@ class Modal(CrossingModel):
 
     def checks(self, fields, grid, daf):  # noqa: ANN001, ANN201
         warned = []
-        missing = missing_spans(self.bridge, self.basis)
+        missing = missing_spans(self.bridge, self.count)
         if missing:
             warned.append(missing_note(missing, self.count))
         series = fields["modal_coordinates"] @ self.phi_mid.T
@@ -451,7 +452,7 @@ class Modal(CrossingModel):
         for i in first:
             bridge = batch.bridges[batch.bridge[i]]
             count = int(batch.modes[i])
-            missing = missing_spans(bridge, beam_modes(bridge, count))
+            missing = missing_spans(bridge, count)
             if missing:
                 out.append(missing_note(missing, count))
         return out
