@@ -98,7 +98,7 @@ from .base import (
 from .batch import Batch
 from .lanes_modal import run as run_lanes
 from .results import Crossing
-from .statics import influence_at, span_statics
+from .statics import influence_pieces, span_statics
 
 
 def default_time_step(bridge: Bridge, vehicle: object, modes: int) -> float:
@@ -259,6 +259,32 @@ def _kernel(
         track_contact(summary, weight + force_b, x[n_nodes - 1], 0.0)
 
 
+@numba.njit(cache=True)
+def _correction_values(s, force, supports, kappa, coef, g, breaks, cubics, out):
+    """``out[i, j] = force[i] (sum_n g[j, n] phi_n(s[i]) - eta_j(s[i]))`` at stations ``s``
+    from the bridge start: the mode-acceleration correction, the exact influence line
+    ``eta_j`` from its cubic pieces (``breaks``, ``cubics``:
+    :func:`~vbi_lib.models.statics.influence_pieces`), as the lane kernel evaluates it."""
+    n_modes = kappa.shape[0]
+    phi = np.empty(n_modes)
+    dphi = np.empty(n_modes)
+    ddphi = np.empty(n_modes)
+    last = breaks.shape[1] - 2
+    for i in range(s.shape[0]):
+        shape_values(s[i], supports, kappa, coef, phi, dphi, ddphi)
+        for j in range(out.shape[1]):
+            series = 0.0
+            for n in range(n_modes):
+                series += g[j, n] * phi[n]
+            k = 0
+            while k < last and s[i] >= breaks[j, k + 1]:
+                k += 1
+            width = breaks[j, k + 1] - breaks[j, k]
+            u = (s[i] - breaks[j, k]) / width if width > 0.0 else 0.0
+            eta = ((cubics[j, k, 3] * u + cubics[j, k, 2]) * u + cubics[j, k, 1]) * u
+            out[i, j] = force[i] * (series - (eta + cubics[j, k, 0]))
+
+
 # ---------------------------------------------------------------------------- model
 @dataclass(frozen=True, eq=False, kw_only=True, repr=False)
 class ModalCrossing(Crossing):
@@ -403,14 +429,19 @@ class Modal(CrossingModel):
         (zero for an axle off the bridge over the step, and at the last node)."""
         n_nodes, n_spans = grid.x.size, self.bridge.n_spans
         out = np.zeros((n_nodes, n_spans))
-        g = self.phi_mid / self.basis.omega**2  # (n_spans, N)
+        g = np.ascontiguousarray(self.phi_mid / self.basis.omega**2)  # (n_spans, N)
+        breaks, cubics = influence_pieces(self.bridge)
+        b = self.basis
         for a, offset in enumerate(self.system.offsets):
             on = np.flatnonzero(grid.axle_span[a, : n_nodes - 1] > 0)
             if on.size == 0:
                 continue
             s = np.clip(grid.x[on] - offset - self.bridge_start, 0.0, self.bridge.length)
-            series = self.basis.shape(s) @ g.T  # (n_on, n_spans)
-            out[on] += contact[on, a, None] * (series - influence_at(self.bridge, s))
+            part = np.zeros((on.size, n_spans))
+            _correction_values(s, np.ascontiguousarray(contact[on, a]), np.array(b.supports),
+                               np.array(b.wavenumber), np.array(b.coefficients), g, breaks,
+                               cubics, part)  # fmt: skip
+            out[on] += part
         return out
 
     def midspan_history(self, fields, grid):  # noqa: ANN001, ANN201

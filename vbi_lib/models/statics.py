@@ -36,7 +36,7 @@ from ..bridges import Bridge
 from ..modes import beam_modes
 from ..vehicles import VehicleSystem
 
-__all__ = ["KINDS", "influence", "influence_at", "influence_pieces", "span_statics"]
+__all__ = ["KINDS", "influence", "influence_pieces", "span_statics"]
 
 #: The statics a span DAF can divide by.
 KINDS = ("one-shape", "exact", "modal")
@@ -194,19 +194,3 @@ def influence_pieces(bridge: Bridge) -> tuple[np.ndarray, np.ndarray]:
     breaks.setflags(write=False)
     coef.setflags(write=False)
     return breaks, coef
-
-
-def influence_at(bridge: Bridge, s: np.ndarray) -> np.ndarray:
-    """The exact downward midspan deflections under a unit load at ``s`` [m/N],
-    ``(n_s, n_spans)``, from :func:`influence_pieces` (as the lane kernels evaluate them)."""
-    breaks, coef = influence_pieces(bridge)
-    s = np.asarray(s, dtype=float)
-    out = np.empty((s.size, bridge.n_spans))
-    for j in range(bridge.n_spans):
-        b = breaks[j]
-        k = np.clip(np.searchsorted(b, s, side="right") - 1, 0, b.size - 2)
-        width = b[k + 1] - b[k]
-        u = (s - b[k]) * np.divide(1.0, width, out=np.zeros_like(width), where=width > 0)
-        c = coef[j, k]
-        out[:, j] = ((c[:, 3] * u + c[:, 2]) * u + c[:, 1]) * u + c[:, 0]
-    return out
