@@ -28,7 +28,7 @@ from .lanes import (
     CHUNK,
     CONTRACT,
     LANES,
-    P_COUNT,
+    MARK_COUNT,
     T_INNER,
     T_LENGTH,
     T_SHARED,
@@ -47,7 +47,7 @@ from .lanes import (
     start_summaries,
     start_walkers,
     track_force,
-    track_peak,
+    track_lane_peak,
 )
 from .statics import influence_pieces
 
@@ -86,7 +86,7 @@ S_COUNT = 5
 (Z_UV, Z_VV, Z_LAST_FORCE, Z_LAST_X, Z_LAST_ON, Z_H, Z_RATE, Z_ON, Z_ACTIVE, Z_UB,
  Z_UBD, Z_FORCE, Z_NUM, Z_DEN, Z_SV, Z_M1, Z_M2, Z_V1, Z_V2, Z_S1, Z_S2, Z_PM1, Z_PM2,
  Z_PV1, Z_PV2, Z_PC1, Z_PC2, Z_PH, Z_SUMMARY) = range(29)  # fmt: skip
-Z_COUNT = Z_SUMMARY + SUMMARY_SIZE + P_COUNT
+Z_COUNT = Z_SUMMARY + SUMMARY_SIZE + MARK_COUNT
 # y: per-mode values, mode-major
 Y, V, YT, VT, R, INV_DD = range(6)
 Y_COUNT = 6
@@ -386,9 +386,9 @@ def _close_step(z, const, lane, x, on, contact):
     hh = h if closing else 1.0
     r1 = (c1 - z[_k(Z_PC1, lane)]) / hh
     r2 = (c2 - z[_k(Z_PC2, lane)]) / hh
-    track_peak(z, Z_SUMMARY, lane, closing, 0.0, z[_k(Z_PM1, lane)], m1,
+    track_lane_peak(z, Z_SUMMARY, lane, closing, 0.0, z[_k(Z_PM1, lane)], m1,
                z[_k(Z_PV1, lane)] + r1, z[_k(Z_V1, lane)] + r1, hh)  # fmt: skip
-    track_peak(z, Z_SUMMARY, lane, closing, 1.0, z[_k(Z_PM2, lane)], m2,
+    track_lane_peak(z, Z_SUMMARY, lane, closing, 1.0, z[_k(Z_PM2, lane)], m2,
                z[_k(Z_PV2, lane)] + r2, z[_k(Z_V2, lane)] + r2, hh)  # fmt: skip
     z[_k(Z_PM1, lane)] = m1
     z[_k(Z_PM2, lane)] = m2

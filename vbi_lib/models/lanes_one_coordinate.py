@@ -27,7 +27,7 @@ from .lanes import (
     CHUNK,
     CONTRACT,
     LANES,
-    P_COUNT,
+    MARK_COUNT,
     T_INNER,
     T_LENGTH,
     T_SHARED,
@@ -44,7 +44,7 @@ from .lanes import (
     start_summaries,
     start_walkers,
     track_force,
-    track_peak_pair,
+    track_lane_peaks,
 )
 
 # columns of the table of crossings, after the shared ones
@@ -61,7 +61,7 @@ NODES = CHUNK + 1
 # rows of a block's state: u_v, u_v', z_b, z_b', the contact force at the last node, then
 # the summary (layout of the base module) from row Z_SUMMARY
 Z_U, Z_V, Z_Q, Z_QD, Z_LAST_FORCE, Z_LAST_X, Z_LAST_ON, Z_SUMMARY = range(8)
-Z_COUNT = Z_SUMMARY + SUMMARY_SIZE + P_COUNT
+Z_COUNT = Z_SUMMARY + SUMMARY_SIZE + MARK_COUNT
 
 
 @numba.njit(cache=True, inline="always")
@@ -180,7 +180,7 @@ def _steps(buf, const, state):
             q_new = q + sixth * (qd + 2.0 * qd2 + 2.0 * qd3 + qd4)
             qd_new = qd + sixth * (b1 + 2.0 * b2 + 2.0 * b3 + b4)
             # every midspan over the whole run: psi(mid_j) z_b = +z_b (span 1), -z_b (span 2)
-            track_peak_pair(state, Z_SUMMARY, lane, active, q, q_new, qd, qd_new, h)
+            track_lane_peaks(state, Z_SUMMARY, lane, active, q, q_new, qd, qd_new, h)
             track_force(state, Z_SUMMARY, lane, on, weight + f1, xa, h)
             # the contact force at the step's end: the crossing's last node uses it
             f_end = _force(kv, cv, eb, rate, u_new, ud_new, kzb, czb, q_new, qd_new)
@@ -194,7 +194,7 @@ def _steps(buf, const, state):
             state[Z_V * LANES + lane] = ud_new
             state[Z_Q * LANES + lane] = q_new
             state[Z_QD * LANES + lane] = qd_new
-        refine_peaks(state, Z_SUMMARY, 1)  # one set: track_peak_pair's
+        refine_peaks(state, Z_SUMMARY, 1)  # one set: track_lane_peaks's
 
 
 @numba.njit(cache=True, error_model="numpy")
