@@ -42,6 +42,7 @@ from .roughness import fit_iso8608, iri, profile_spectrum
 from .validity import (
     ContactLossWarning,
     OutsideValidityWarning,
+    TruncationWarning,
     UnresolvedRoadWarning,
     VbiWarning,
 )
@@ -62,6 +63,7 @@ __all__ = [
     "Profile",
     "ProfileFileError",
     "QuarterCar",
+    "TruncationWarning",
     "UnresolvedRoadWarning",
     "VbiWarning",
     "Vehicle",

@@ -24,6 +24,7 @@ __all__ = [
     "CostWarning",
     "FailedRowsWarning",
     "OutsideValidityWarning",
+    "TruncationWarning",
     "UnresolvedRoadWarning",
     "VbiWarning",
     "WorkerLostWarning",
@@ -55,6 +56,12 @@ class OutsideValidityWarning(VbiWarning):
     The result is computed, but it is not a prediction the model was built and checked for;
     :data:`vbi_lib.ranges.RANGES` gives the intended (soft) range of each input and why.
     """
+
+
+class TruncationWarning(VbiWarning):
+    """A model's own truncation may mislead for this crossing: the modal model's ``modes``
+    leave out a span's own fundamental, or its N-mode series DAF and its mode-acceleration DAF
+    (the headline, which converges) differ by more than 1 %.  The note says by how much."""
 
 
 class UnresolvedRoadWarning(OutsideValidityWarning):

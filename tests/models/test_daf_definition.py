@@ -17,16 +17,15 @@ written out below.
 * **The static each DAF divides by**, per span and per section, checked against the
   independent beam for the whole axle group in every position: the exact beam's for the
   modal model and the sections, the one-shape beam's for the one-coordinate model
-  (DAF-DEFINITION.md).
+  (:mod:`vbi_lib.models.statics`).
 * **Design shear at an interior support** under an HS20 on 18 + 24 m, both faces, against
   the influence lines.
 * **A short span beside a long one**: the default modes give span DAFs within 1 % of 100
   modes, or a warning.
 * **The issue's bug reports** as regression tests.
 
-Tests that wait for the lead's core (the DAF definitions, the default number of modes) are
-strict expected failures, named in their reasons; the interior-support shear on both faces
-runs on h22's ``shear_at(x, side=...)`` and ``SectionResponse.faces``.
+The interior-support shear on both faces runs on ``Crossing.shear_at(x, side=...)`` and
+``SectionResponse.faces``.
 """
 
 from __future__ import annotations
@@ -68,8 +67,6 @@ VEHICLES = {
     "rigid truck": VEHICLE_CASES["rigid truck"],
     "convoy": VEHICLE_CASES["convoy"],
 }
-CORE = "issue 20: waits for the lead's core (DAF-DEFINITION.md)"
-MODES = "issue 20: waits for the lead's default number of modes (modes=None)"
 
 
 def bridge_of(spans: list[float]) -> vbi.Bridge:
@@ -149,9 +146,9 @@ def exact_span_statics(spans: list[float], vehicle: object) -> np.ndarray:
 
 
 def one_shape_span_statics(spans: list[float], vehicle: object) -> np.ndarray:
-    """The one-coordinate model's static of each span [m] (DAF-DEFINITION.md): the beam bent
-    in ``psi = sin(pi x / L)`` over all its spans, ``k* = n pi^4 EI / (2 L^3)``; midspan j
-    deflects ``psi(mid_j) sum_a psi(x_a) W_a / k*``, largest over the positions."""
+    """The one-coordinate model's static of each span [m] (:mod:`vbi_lib.models.statics`):
+    the beam bent in ``psi = sin(pi x / L)`` over all its spans, ``k* = n pi^4 EI / (2 L^3)``;
+    midspan j deflects ``psi(mid_j) sum_a psi(x_a) W_a / k*``, largest over the positions."""
     span, n = spans[0], len(spans)
     k_star = n * math.pi**4 * EI / (2.0 * span**3)
     system = as_system(vehicle)
@@ -197,43 +194,25 @@ def test_the_one_shape_stiffness_is_the_bridge_s() -> None:
 
 
 # ---------------------------------------------------------------------------- the crawl matrix
-#: (bridge, vehicle, model) whose span DAF at a crawl is not 1 today: the peak is read only
-#: while the first axle is on a span, or divided by another span's static (issue 20).
-WRONG_SPAN_DAF = {
-    ("2 equal", "convoy", "one-coordinate"),
-    ("2 equal", "convoy", "modal"),
-    ("3 unequal", "hs20", "modal"),
-    ("3 unequal", "hs20 without tyres", "modal"),
-    ("3 unequal", "convoy", "modal"),
-    ("4 unequal", "hs20", "modal"),
-    ("4 unequal", "hs20 without tyres", "modal"),
-    ("4 unequal", "convoy", "modal"),
-}
-#: ... whose span DAF divides by another static than DAF-DEFINITION's today: every modal
-#: crossing (its N-mode series static, 0.1 % off the exact beam's with three modes a span)
-WRONG_SPAN_STATIC = {(bridge, vehicle, "modal") for bridge in BRIDGES for vehicle in VEHICLES}
-
-
-def _cases(expected_failures: set, reason: str) -> list:
+def _cases() -> list:
     cases = []
     for bridge_name, spans in BRIDGES.items():
         for vehicle_name in VEHICLES:
             for model in models_of(spans):
                 key = (bridge_name, vehicle_name, model)
-                marks = [pytest.mark.xfail(strict=True, reason=reason)] * (key in expected_failures)
-                cases.append(pytest.param(*key, marks=marks, id="-".join(key)))
+                cases.append(pytest.param(*key, id="-".join(key)))
     return cases
 
 
 @pytest.mark.parametrize(("bridge_name", "vehicle_name", "model"),
-                         _cases(WRONG_SPAN_DAF, CORE))  # fmt: skip
+                         _cases())  # fmt: skip
 def test_crawl_span_dafs_are_one(bridge_name: str, vehicle_name: str, model: str) -> None:
     run = crossing(bridge_name, vehicle_name, model)
     assert run.daf == pytest.approx(np.ones(len(BRIDGES[bridge_name])), abs=TOLERANCE)
 
 
 @pytest.mark.parametrize(("bridge_name", "vehicle_name", "model"),
-                         _cases(WRONG_SPAN_DAF, CORE))  # fmt: skip
+                         _cases())  # fmt: skip
 def test_crawl_span_dafs_of_simulate_many_are_one(
     bridge_name: str, vehicle_name: str, model: str
 ) -> None:
@@ -244,7 +223,7 @@ def test_crawl_span_dafs_of_simulate_many_are_one(
 
 
 @pytest.mark.parametrize(("bridge_name", "vehicle_name", "model"),
-                         _cases(WRONG_SPAN_STATIC | WRONG_SPAN_DAF, CORE))  # fmt: skip
+                         _cases())  # fmt: skip
 def test_crawl_span_statics_are_the_beam_s(bridge_name: str, vehicle_name: str, model: str) -> None:
     """Per span: the crawl's midspan peak (the headline displacement) and the static the
     DAF divides by (peak / DAF) are the reference beam's static for the whole axle group."""
@@ -366,7 +345,6 @@ def test_design_shear_at_an_interior_support_under_an_hs20() -> None:
 
 
 # ---------------------------------------------------------------------------- default modes
-@pytest.mark.xfail(strict=True, reason=MODES)
 def test_the_default_modes_of_a_short_span_beside_a_long_one() -> None:
     """``Bridge.continuous([10, 200])``, every input in its intended range (first frequency
     0.75 Hz): with ``modes=None`` the span DAFs are within 1 % of 100 modes', or the
@@ -400,7 +378,6 @@ def crawl_both_paths(bridge: vbi.Bridge, vehicle: object, **kw: object) -> tuple
     return single, many.daf[0, : bridge.n_spans]
 
 
-@pytest.mark.xfail(strict=True, reason=CORE)
 def test_an_hs20_at_a_crawl_over_three_20_ft_spans() -> None:
     """Issue 20: span DAFs 0.874, 0.485 and 0.383 (the peak read only while the first axle
     is on a span, over the whole group's static)."""
@@ -417,7 +394,6 @@ def test_an_hs20_at_a_crawl_over_three_20_ft_spans() -> None:
     assert peak / single.daf == pytest.approx(reference, rel=2e-4)
 
 
-@pytest.mark.xfail(strict=True, reason=CORE)
 def test_two_hs20s_20_m_apart_over_18_24_18_m() -> None:
     """Issue 20: span 3's DAF 0.487 at a crawl."""
     bridge = vbi.Bridge.continuous([18.0, 24.0, 18.0], EI=EI, mass_per_length=MASS)
@@ -427,7 +403,6 @@ def test_two_hs20s_20_m_apart_over_18_24_18_m() -> None:
         assert daf == pytest.approx(np.ones(3), abs=TOLERANCE)
 
 
-@pytest.mark.xfail(strict=True, reason=CORE)
 @pytest.mark.parametrize(
     "kw", [{}, {"model": "modal", "modes": 6}], ids=["one-coordinate", "modal"]
 )

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import warnings
 
 import matplotlib
@@ -47,8 +48,21 @@ def test_models_are_looked_up_by_name() -> None:
         vbi.simulate(*small(), model="Modal", modes=3)
     with pytest.raises(ValueError, match="modes=5 applies to model='modal'"):
         vbi.simulate(*small(), modes=5)
-    with pytest.raises(ValueError, match="modes=None"):
-        vbi.simulate(*small(), model="modal")
+
+
+def test_the_default_modes_reach_2_3_times_the_highest_simply_supported_span_frequency() -> None:
+    """Reference: the frequencies of 40 modes, counted in the test against 2.3 f_ss of the
+    shortest span, f_ss = (pi / 2 L^2) sqrt(EI / mbar)."""
+    bridge = small()[0]
+    crossing = vbi.simulate(*small(), model="modal")
+    f_ss = math.pi / (2 * min(bridge.spans) ** 2) * math.sqrt(bridge.EI / bridge.mass_per_length)
+    expected = int((vbi.beam_modes(bridge, 40).frequencies_hz <= 2.3 * f_ss).sum())
+    assert crossing.modes.count == max(1, expected)
+    for spans in ([10.0, 200.0], [12.0, 16.0, 10.0]):
+        b = vbi.Bridge.continuous(spans, EI=bridge.EI, mass_per_length=bridge.mass_per_length)
+        f_ss = math.pi / (2 * min(spans) ** 2) * math.sqrt(b.EI / b.mass_per_length)
+        expected = int((vbi.beam_modes(b, 60).frequencies_hz <= 2.3 * f_ss).sum())
+        assert vbi.models.modal.default_modes(b) == expected
 
 
 @pytest.mark.parametrize("name", ["coupled", "convective"])

@@ -241,7 +241,7 @@ def test_default_steps_of_a_batch_are_each_crossings_own() -> None:
     bridge, vehicle, road, speed, start = build_case("40ft-10Hz-one-span")
     speeds = np.linspace(5.0, 30.0, 5000)  # > 4096 distinct rows: the threaded path
     steps = vbi.models.OneCoordinate.default_time_steps(
-        vbi.models.driver._batch(
+        vbi.models.batch_inputs.batch_of(
             vbi.models.OneCoordinate,
             {
                 "bridges": bridge,

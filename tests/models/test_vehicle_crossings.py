@@ -72,7 +72,7 @@ def test_stiff_tyre_light_wheel_is_the_sprung_mass_on_a_rough_road() -> None:
 
     Every profile sample jumps the road's slope; the unresolved wheel rings at each jump in
     the average-acceleration scheme (its tyre force is not comparable node by node), but
-    the body and the bridge, which the DAF is about, equal the sprung mass's.
+    the body and the bridge's modes equal the sprung mass's.
     """
     bridge, truck, road, speed, start = build_case("100ft-4Hz-two-spans")
     road = vbi.Profile(road.x, 0.2 * road.elevation)
@@ -80,7 +80,10 @@ def test_stiff_tyre_light_wheel_is_the_sprung_mass_on_a_rough_road() -> None:
     ref = vbi.simulate(bridge, truck, road, speed, start, dt=dt, **MODAL)
     car = vbi.simulate(bridge, stiff_wheel(truck, 1e-8), road, speed, start, dt=dt, **MODAL)
     assert ref.min_contact_force_ratio > 0.4 and car.flight_fraction == 0.0
-    np.testing.assert_allclose(car.daf, ref.daf, rtol=1e-6)
+    np.testing.assert_allclose(car.series_daf, ref.series_daf, rtol=1e-6)
+    # the mode-acceleration headline adds R(t) times the statics the series leaves out, and
+    # R is the ringing tyre force: the DAFs agree to the ringing's share of that part
+    np.testing.assert_allclose(car.daf, ref.daf, rtol=1e-3)
     scale = np.abs(ref.vehicle_displacement).max()
     np.testing.assert_allclose(
         car.vehicle_displacement, ref.vehicle_displacement, atol=1e-6 * scale
@@ -262,7 +265,10 @@ def fryba_case(vehicle: object, options: dict) -> tuple[np.ndarray, np.ndarray]:
     modes = options.get("modes", 1)
     expected = moving_forces_midspan(bridge, list(system.static_loads), list(entry), speed,
                                      modes, run.time)  # fmt: skip
-    return run.midspan_displacement[:, 0], expected
+    # the closed form is the N-mode series (the modal model's headline adds the statics
+    # the series leaves out)
+    simulated = run.series_midspan_displacement if "modes" in options else run.midspan_displacement
+    return simulated[:, 0], expected
 
 
 @MODELS

@@ -25,9 +25,17 @@ static deflection its DAF divides by.  Everything else is here, written once:
 
 Every kernel fills one *summary* vector per crossing with the layout of the ``S_*``
 constants below, so the driver turns any model's output into a result the same way.  The
-summary keeps the midspan peaks of the first :data:`PEAK_SLOTS` spans; the peaks of a bridge
-with more spans come from the crossing's histories (:meth:`CrossingModel.span_peaks`,
+summary keeps the midspan peaks of the first :data:`PEAK_SLOTS` spans for the batches; a
+single crossing takes every span's peak from its histories (:meth:`CrossingModel.span_peaks`,
 :func:`history_peaks`), refined the same way.
+
+**The span DAF, one definition.**  The DAF of span ``j`` is the largest downward displacement
+of its midspan over the whole run (the vehicle starts on the approach and the run ends when
+its last axle leaves the bridge, plus ``free_vibration``), divided by the largest downward
+static displacement of the same midspan under the same vehicle's static axle loads, all
+axles in every position of the group, by the same model's statics
+(:mod:`~vbi_lib.models.statics`).  Every kernel and :func:`history_peaks` track every span's
+midspan at every step, whichever span the axles are on.
 """
 
 from __future__ import annotations
@@ -48,6 +56,7 @@ from ..units import g as GRAVITY
 from ..vehicles import Vehicle, VehicleSystem, as_system
 from .batch import PEAK_SLOTS, Batch
 from .grid import Grid, node_grid
+from .statics import span_statics
 
 __all__ = ["CrossingModel", "Grid", "check_crossing", "node_grid"]
 
@@ -315,22 +324,33 @@ def track_peak(summary, span, peak):
 
 
 @numba.njit(cache=True)
-def history_peaks(midspan, midspan_rate, x, speed, span_of_step, peaks):
-    """Largest downward midspan deflection of every span while the wheel is on it, from
-    histories at the nodes (``midspan``, ``midspan_rate``: ``(n_nodes, n_spans)``), refined
-    inside each step as the kernels do (:func:`downward_peak`); into ``peaks``."""
+def history_peaks(midspan, midspan_rate, step_rate, x, speed, peaks):
+    """Largest downward midspan deflection of every span over the whole run, from histories
+    at the nodes (``midspan``, ``midspan_rate``: ``(n_nodes, n_spans)``), refined inside each
+    step as the kernels do (:func:`downward_peak`); into ``peaks``.  ``step_rate[k]`` is
+    added to both end rates of step ``k`` (a part of the displacement known only by its
+    secant over the step; zeros if none)."""
     for j in range(peaks.shape[0]):
         peaks[j] = -np.inf
     for k in range(x.shape[0] - 1):
-        span = span_of_step[k]
-        if span > 0:
-            j = span - 1
-            h = (x[k + 1] - x[k]) / speed
-            peak = downward_peak(
-                midspan[k, j], midspan[k + 1, j], midspan_rate[k, j], midspan_rate[k + 1, j], h
-            )
+        h = (x[k + 1] - x[k]) / speed
+        if h <= 0.0:
+            continue
+        for j in range(peaks.shape[0]):
+            extra = step_rate[k, j]
+            peak = downward_peak(midspan[k, j], midspan[k + 1, j], midspan_rate[k, j] + extra,
+                                 midspan_rate[k + 1, j] + extra, h)  # fmt: skip
             if peak > peaks[j]:
                 peaks[j] = peak
+
+
+def peaks_of(value: np.ndarray, rate: np.ndarray, step_rate: np.ndarray, x: np.ndarray,
+             speed: float) -> np.ndarray:  # fmt: skip
+    """:func:`history_peaks` of histories ``(n_nodes, n_spans)``: the peaks ``(n_spans,)`` [m]."""
+    peaks = np.empty(value.shape[1])
+    history_peaks(np.ascontiguousarray(value), np.ascontiguousarray(rate),
+                  np.ascontiguousarray(step_rate), x, speed, peaks)  # fmt: skip
+    return peaks
 
 
 # ---------------------------------------------------------------------------- models
@@ -353,9 +373,14 @@ class CrossingModel:
         The largest ``omega_max dt`` the integrator tolerates (an explicit scheme's stability
         limit, with a margin); ``inf`` for an unconditionally stable one.  The driver refuses
         longer steps (:func:`check_step`).
+    statics
+        The statics every span DAF of the model divides by (:data:`~vbi_lib.models.statics.KINDS`):
+        ``"one-shape"`` for a model that bends the beam in one shape, ``"exact"`` for one whose
+        headline displacement converges to the exact beam's.
     """
 
     max_omega_dt: ClassVar[float] = math.inf
+    statics: ClassVar[str] = "exact"
     name: ClassVar[str]
     description: ClassVar[str]
     result_type: ClassVar[type]
@@ -384,32 +409,47 @@ class CrossingModel:
         raise NotImplementedError
 
     def static_deflection(self) -> float:
-        """The static midspan deflection the DAF divides by [m].
-
-        The largest midspan deflection under the vehicle's static axle loads crawling across
-        the bridge (the study's definition for reference models), as the model computes it.
-        """
-        raise NotImplementedError
+        """The largest of :meth:`span_static_deflections` [m]."""
+        return float(np.max(self.span_static_deflections()))
 
     def span_static_deflections(self) -> np.ndarray:
         """The static deflection each span's DAF divides by [m], ``(n_spans,)``.
 
-        By default :meth:`static_deflection` for every span; a model for layouts whose spans
-        differ gives each span its own.
+        The largest downward static deflection of each midspan under the vehicle's static
+        axle loads, all axles in every position of the group, by the model's own statics
+        (:attr:`statics`; :func:`~vbi_lib.models.statics.span_statics`).
         """
-        return np.full(self.bridge.n_spans, self.static_deflection())
+        return span_statics(self.bridge, self.system, self.statics)
 
-    def span_peaks(self, summary: np.ndarray, fields: dict[str, Any], grid: Grid) -> np.ndarray:
-        """Largest downward midspan deflection of each span while the wheel is on it [m].
+    def midspan_history(self, fields: dict[str, Any], grid: Grid) -> tuple[np.ndarray, ...]:
+        """The headline displacement of every midspan at the nodes [m] (up positive), its
+        rate [m/s] and a rate added over each step [m/s], each ``(n_nodes, n_spans)``: what
+        a span's DAF reads (:func:`history_peaks`)."""
+        raise NotImplementedError
 
-        From the summary for up to :data:`PEAK_SLOTS` spans; a model that runs bridges with
-        more spans overrides this to take them from its histories (:func:`history_peaks`).
+    #: Whether the kernels' summaries hold the span peaks (of the first :data:`PEAK_SLOTS`
+    #: spans, tracked at every step and sub-step); else they come from the histories.
+    summary_peaks: ClassVar[bool] = True
+
+    def span_peaks(self, summary: np.ndarray, history: tuple, grid: Grid) -> np.ndarray:
+        """Largest downward midspan deflection of each span over the whole run [m].
+
+        ``history`` is :meth:`midspan_history`'s.  The kernels track every midspan at every
+        step, whichever span the axles are on, for the first :data:`PEAK_SLOTS` spans
+        (:attr:`summary_peaks`); otherwise the peaks come from ``history``
+        (:func:`history_peaks`), refined the same way.
         """
-        if self.bridge.n_spans > PEAK_SLOTS:
-            raise NotImplementedError(
-                f"{type(self).__name__} keeps the peaks of {PEAK_SLOTS} spans only"
-            )
-        return summary[S_PEAK : S_PEAK + self.bridge.n_spans].copy()
+        if self.summary_peaks and self.bridge.n_spans <= PEAK_SLOTS:
+            return summary[S_PEAK : S_PEAK + self.bridge.n_spans].copy()
+        return peaks_of(*history, grid.x, self.speed)
+
+    def checks(
+        self, fields: dict[str, Any], grid: Grid, daf: np.ndarray
+    ) -> tuple[list, list, dict]:
+        """The model's own checks of a crossing: sentences for ``notes``, sentences the
+        driver also warns of (:class:`~vbi_lib.validity.TruncationWarning`), and extra
+        result fields.  None by default."""
+        return [], [], {}
 
     def integrate(self, grid: Grid) -> tuple[np.ndarray, np.ndarray, dict[str, Any], str]:
         """Run one crossing over ``grid`` keeping its histories.
@@ -433,6 +473,17 @@ class CrossingModel:
         if modes is not None:
             raise ValueError(f"modes={modes!r}: model={cls.name!r} takes no modes option")
         return 0
+
+    @classmethod
+    def resolve_modes(cls, batch: Batch) -> Batch:
+        """The batch with each crossing's ``modes`` as the model runs it (unchanged by default)."""
+        return batch
+
+    @classmethod
+    def batch_notes(cls, batch: Batch) -> list[str]:
+        """Sentences on the model's own approximations in a batch (none by default); the
+        driver warns of them with :class:`~vbi_lib.validity.TruncationWarning`."""
+        return []
 
     @classmethod
     def check_bridge(cls, bridge: Bridge) -> None:
@@ -460,13 +511,14 @@ class CrossingModel:
     def span_static_deflections_of(cls, batch: Batch) -> np.ndarray:
         """Each crossing's :meth:`span_static_deflections` [m], ``(n, max(2, n_spans))``.
 
-        NaN beyond a crossing's spans.  This fallback asks one crossing of each distinct
-        bridge, vehicle and ``modes``.
+        NaN beyond a crossing's spans; computed once per distinct bridge and vehicle.
         """
-        first, inverse = batch.groups(batch.bridge, batch.vehicle, batch.modes)
+        first, inverse = batch.groups(batch.bridge, batch.vehicle)
         out = np.full((first.size, max(PEAK_SLOTS, int(batch.n_spans().max()))), np.nan)
         for k, i in enumerate(first):
-            values = cls.one_of(batch, int(i)).span_static_deflections()
+            bridge = batch.bridges[batch.bridge[i]]
+            system = as_system(batch.vehicles[batch.vehicle[i]])
+            values = span_statics(bridge, system, cls.statics)
             out[k, : values.size] = values
         return out[inverse]
 

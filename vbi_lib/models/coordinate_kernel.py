@@ -31,7 +31,6 @@ from .axles import (
     RETRY,
     locate_switch,
     log_event,
-    occupied,
     track_axles,
     track_flight,
     unpack,
@@ -87,7 +86,6 @@ def kernel(x, road, axle_span, params, n_spans, coupled, convective, vec, n, n_a
     y = np.zeros(m)
     trial = np.empty(m)
     flying = np.zeros(n_axles, dtype=np.bool_)
-    spans = np.zeros(max(n_spans, 1), dtype=np.bool_)
 
     def inputs(theta, k, shapes_known=False):
         """Shape values and the road under each axle at fraction ``theta`` of step ``k``.
@@ -191,13 +189,12 @@ def kernel(x, road, axle_span, params, n_spans, coupled, convective, vec, n, n_a
                                  + slopes[3, i]) / 6.0  # fmt: skip
 
     def peaks(y0, y1, h):
-        """Midspan peaks of the occupied spans between two states ``h`` seconds apart."""
+        """Every midspan's peak between two states ``h`` seconds apart (the whole run)."""
         for j in range(n_spans):
-            if spans[j]:
-                sign = 1.0 if j % 2 == 0 else -1.0  # psi at midspan of span j + 1
-                track_peak(summary, j + 1, downward_peak(
-                    sign * y0[2 * n], sign * y1[2 * n], sign * y0[2 * n + 1],
-                    sign * y1[2 * n + 1], h))  # fmt: skip
+            sign = 1.0 if j % 2 == 0 else -1.0  # psi at midspan of span j + 1
+            track_peak(summary, j + 1, downward_peak(
+                sign * y0[2 * n], sign * y1[2 * n], sign * y0[2 * n + 1],
+                sign * y1[2 * n + 1], h))  # fmt: skip
 
     for i in range(n):
         y[i] = u0[i]
@@ -235,7 +232,6 @@ def kernel(x, road, axle_span, params, n_spans, coupled, convective, vec, n, n_a
         track_axles(summary, force, W, off, x[k], axle_span, step, h, unilateral, weight)
         if last:
             break
-        occupied(axle_span, k, n_spans, spans)
         # one integrator call site for the whole step: phase 0 steps to the end of the
         # step; if a tyre's force changed sign, phase 1 brackets the switch of ``axle``
         # (Illinois, each trial a step from th0) and phase 2 takes the step to it.

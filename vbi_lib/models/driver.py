@@ -7,9 +7,7 @@ the result, the same way for every model.
 
 from __future__ import annotations
 
-import math
 import warnings
-from typing import Any
 
 import numpy as np
 
@@ -17,13 +15,18 @@ from .. import _validation as check
 from ..bridges import Bridge
 from ..costs import warn_crossing
 from ..profiles import Profile
-from ..ranges import MAX_NODES, RANGES, check_range, warn_outside
-from ..road_checks import past_the_road, road_notes
-from ..validity import ContactLossWarning, UnresolvedRoadWarning, contact_note, flight_note
+from ..ranges import warn_outside
+from ..road_checks import past_the_road
+from ..validity import (
+    ContactLossWarning,
+    TruncationWarning,
+    UnresolvedRoadWarning,
+    contact_note,
+    flight_note,
+)
 from ..vehicles import as_system
 from ..vehicles.footprint import unresolved_road_note, warn_unresolved_roads
 from .base import (
-    DEFAULT_OMEGA_DT,
     PEAK_SLOTS,
     S_BRIDGE_TIME,
     S_FLIGHT_TIME,
@@ -34,13 +37,12 @@ from .base import (
     S_TENSION_TIME,
     SUMMARY_SIZE,
     CrossingModel,
-    _uneven_spacing,
     check_crossing,
     check_step,
     input_notes,
     node_grid,
 )
-from .batch import Batch
+from .batch_inputs import as_list, batch_of, check_modes_option, check_steps
 from .modal import Modal
 from .one_coordinate import OneCoordinate
 from .results import BatchResult, Crossing
@@ -63,15 +65,8 @@ def _model(model: object) -> type[CrossingModel]:
     return MODELS[model]
 
 
-def _modes(modes: object) -> int | None:
-    """``None``, or a number of modes: an int within the range of ``modes``."""
-    if modes is None:
-        return None
-    return int(check_range("modes", check.integer("modes", modes), warn=False))
-
-
 def _never_pushed_down(peaks: np.ndarray) -> np.ndarray:
-    """Spans whose midspan never went down while the vehicle was on them (peak <= 0)."""
+    """Spans whose midspan never went down over the run (peak <= 0)."""
     return ~(peaks > 0.0) & ~np.isnan(peaks)
 
 
@@ -140,7 +135,10 @@ def simulate(
         of any layout of spans (:meth:`~vbi_lib.Bridge.continuous`), Newmark average
         acceleration.
     modes
-        Number of beam modes, for ``model="modal"`` only.
+        Number of beam modes, for ``model="modal"`` only; ``None``: every mode up to 2.3
+        times the highest simply supported frequency of any one span
+        (:func:`~vbi_lib.models.modal.default_modes`), which includes every span's own
+        fundamental.
     coupled
         ``False`` for the decoupled model (92)-(99): the contact force ignores the bridge.
     convective
@@ -157,8 +155,16 @@ def simulate(
     Crossing
         The model's subclass of :class:`~vbi_lib.models.results.Crossing`; its
         ``moment_at``, ``shear_at``, ``displacement_at`` and ``sections`` give the responses
-        at any section.  The DAF of a span the vehicle never pushed down (its midspan only
-        rose while the vehicle was on it) is NaN, and ``notes`` says so.
+        at any section.
+
+        ``daf[j]``, the DAF of span ``j + 1``, is the largest downward displacement of its
+        midspan over the whole run divided by the largest downward static displacement of
+        the same midspan under the vehicle's static axle loads, all axles in every position
+        of the group, by the model's own statics: the one-shape beam's for the
+        one-coordinate model (one axle: ``P / k*``, (90)-(91)), the exact beam's for the
+        modal model, whose headline displacement is the mode-acceleration one
+        (:mod:`~vbi_lib.models.statics`).  The DAF of a span the vehicle never pushed down
+        (its midspan only rose) is NaN, and ``notes`` says so.
 
     Raises
     ------
@@ -170,6 +176,9 @@ def simulate(
 
     Warns
     -----
+    TruncationWarning
+        ``model="modal"``: ``modes`` leaves out a span's own fundamental, or the N-mode
+        series DAF of a span differs from the mode-acceleration DAF by more than 1 %.
     OutsideValidityWarning
         The speed, the profile's sampling (the study's rule (32)) or the step outside their
         intended ranges; the sentence is also in ``notes``, with those on the bridge and the
@@ -199,7 +208,7 @@ def simulate(
     coupled = check.flag("coupled", coupled)
     convective = check.flag("convective", convective)
     free_vibration = check.non_negative("free_vibration", free_vibration)
-    modes = _modes(modes)
+    modes = check_modes_option(modes)
     given = None if dt is None else check.positive("dt", dt)
     setup = kind(bridge, vehicle, speed, bridge_start, coupled=coupled, convective=convective,
                  modes=modes)  # fmt: skip
@@ -221,14 +230,24 @@ def simulate(
     if road_note:  # issue 20 hook (h20): a contact force set by the road's sampling
         notes.append(road_note)
         warnings.warn(road_note, UnresolvedRoadWarning, stacklevel=2)
-    static = setup.static_deflection()
-    peaks = setup.span_peaks(summary, fields, grid)
+    statics = setup.span_static_deflections()
+    histories = {**fields, "axle_contact_force": contact}
+    history = setup.midspan_history(histories, grid)
+    fields["midspan_displacement"] = history[0]  # what the span DAFs read
+    peaks = setup.span_peaks(summary, history, grid)
     never = _never_pushed_down(peaks)
     for j in np.flatnonzero(never):
         notes.append(
-            f"span {j + 1} was never pushed down while the vehicle was on it (its midspan only "
-            "rose): its DAF is not defined and is NaN"
+            f"span {j + 1} was never pushed down over the run (its midspan only rose): its "
+            "DAF is not defined and is NaN"
         )
+    daf = np.where(never, np.nan, peaks) / statics
+    quiet, warned, extra = setup.checks(histories, grid, daf)
+    notes += quiet
+    for text in warned:
+        notes.append(text)
+        warnings.warn(text, TruncationWarning, stacklevel=2)
+    fields.update(extra)
     min_ratio, tension, flight = _contact(summary, system.weight, system.has_unilateral)
     if flight > 0:
         notes.append(flight_note(float(flight)))
@@ -249,8 +268,8 @@ def simulate(
         contact_force=contact.sum(axis=1),
         axle_contact_force=contact,
         span_of_step=grid.span_of_step,
-        daf=np.where(never, np.nan, peaks) / setup.span_static_deflections(),
-        static_deflection=static,
+        daf=daf,
+        static_deflection=float(statics.max()),
         dt=grid.dt_max,
         coupled=coupled,
         convective=convective,
@@ -260,222 +279,6 @@ def simulate(
         notes=tuple(notes),
         **fields,
     )
-
-
-def _is_list(value: object) -> bool:
-    return isinstance(value, list | tuple | np.ndarray)
-
-
-def _as_list(name: str, value: object) -> object:
-    """A pandas Series or Index as its array; other iterables that are not a list, tuple or
-    array (a set, a generator, a dict) refused by name: they have no order to trust."""
-    if _is_list(value):
-        return value
-    to_numpy = getattr(value, "to_numpy", None)
-    if callable(to_numpy) and hasattr(value, "__len__"):
-        return to_numpy()
-    if isinstance(value, set | frozenset | dict) or hasattr(value, "__next__"):
-        raise TypeError(
-            f"{name} must be one value or a list, tuple or array of them, not a "
-            f"{type(value).__name__}; pass list({name}) or a numpy array"
-        )
-    return value
-
-
-def _factorize(values: object, n: int) -> tuple[np.ndarray, tuple]:
-    """Codes and the distinct objects (by identity) of a list, or of one repeated value."""
-    if not _is_list(values):
-        return np.zeros(n, np.int64), (values,)
-    codes = np.empty(n, np.int64)
-    seen: dict[int, int] = {}
-    distinct = []
-    for i, obj in enumerate(values):
-        code = seen.get(id(obj))
-        if code is None:
-            code = seen[id(obj)] = len(distinct)
-            distinct.append(obj)
-        codes[i] = code
-    return codes, tuple(distinct)
-
-
-def _numbers(values: object, n: int) -> np.ndarray:
-    """Floats of a list (or one repeated value); entries that are not numbers become NaN."""
-    if isinstance(values, np.ndarray) and values.dtype.kind in "fiu" and values.ndim == 1:
-        return values.astype(float)
-    items = values if _is_list(values) else [values]
-    out = np.full(len(items), np.nan)
-    for i, value in enumerate(items):
-        if isinstance(value, int | float | np.integer | np.floating) and not isinstance(
-            value, bool | np.bool_
-        ):
-            out[i] = value
-    return out if _is_list(values) else np.full(n, out[0])
-
-
-def _flags(name: str, values: object, n: int) -> np.ndarray:
-    if isinstance(values, np.ndarray) and values.dtype == np.bool_ and values.ndim == 1:
-        return values.copy()
-    if not _is_list(values):
-        return np.full(n, check.flag(name, values))
-    out = np.empty(n, dtype=bool)
-    for i, value in enumerate(values):
-        try:
-            out[i] = check.flag(name, value)
-        except TypeError as exc:
-            raise TypeError(f"crossing {i}: {exc}") from None
-    return out
-
-
-def _batch_modes(kind: type[CrossingModel], values: object, n: int) -> np.ndarray:
-    """Each crossing's ``modes``, checked as :func:`simulate` checks it (range, then model)."""
-    if not _is_list(values):
-        return np.full(n, kind.check_modes(_modes(values)), np.int64)
-    out = np.empty(n, np.int64)
-    for i, value in enumerate(values):
-        try:
-            out[i] = kind.check_modes(_modes(value))
-        except (TypeError, ValueError) as exc:
-            raise type(exc)(f"crossing {i}: {exc}") from None
-    return out
-
-
-def _one_crossing(args: dict[str, Any], i: int) -> tuple[float, float]:
-    """:func:`check_crossing` of crossing ``i``, its message prefixed with the crossing."""
-    values = [args[k][i] if _is_list(args[k]) else args[k]
-              for k in ("bridges", "vehicles", "profiles", "speeds", "bridge_starts")]  # fmt: skip
-    try:
-        return check_crossing(*values)
-    except (TypeError, ValueError) as exc:
-        raise type(exc)(f"crossing {i}: {exc}") from None
-
-
-def _wheelbase(vehicle: object) -> float:
-    """A vehicle's wheelbase [m]; NaN for an object that is not one of the library's vehicles."""
-    try:
-        return as_system(vehicle).wheelbase
-    except TypeError:
-        return math.nan
-
-
-def _batch(kind: type[CrossingModel], args: dict[str, Any]) -> Batch:
-    """Check the arguments of :func:`simulate_many` as arrays; errors name the crossing.
-
-    The arrays find the crossings that may fail :func:`check_crossing` (or the model's
-    layout check); those alone are checked one at a time, whose message is raised.
-    """
-    lengths = {k: len(v) for k, v in args.items() if _is_list(v)}
-    if len(set(lengths.values())) > 1:
-        raise ValueError(f"list arguments must have one length; got {lengths}")
-    n = next(iter(lengths.values())) if lengths else 1
-    if n == 0:
-        raise ValueError("simulate_many needs at least one crossing; got empty lists")
-    b, bridges = _factorize(args["bridges"], n)
-    v, vehicles = _factorize(args["vehicles"], n)
-    p, profiles = _factorize(args["profiles"], n)
-    speed = _numbers(args["speeds"], n)
-    start = _numbers(args["bridge_starts"], n)
-    # where the arrays see a problem, one crossing's checks name it (or accept the value)
-    wheelbase = np.array([_wheelbase(x) for x in vehicles])
-    suspects = np.isnan(wheelbase)[v]
-    for codes, objects, kind_ in ((b, bridges, Bridge), (p, profiles, Profile)):
-        wrong = [k for k, obj in enumerate(objects) if not isinstance(obj, kind_)]
-        suspects |= np.isin(codes, wrong)
-    low, high = RANGES["speed"].hard
-    suspects |= ~(np.isfinite(speed) & (speed > low) & (speed <= high)) | ~np.isfinite(start)
-    for i in np.flatnonzero(suspects):
-        speed[i], start[i] = _one_crossing(args, int(i))
-    # the profile covers the approach, the bridge and (several axles) the wheelbase beyond
-    wheelbase = wheelbase[v]
-    end = start + np.array([x.length for x in bridges])[b]
-    first = np.array([x.start for x in profiles])[p]
-    last = np.array([x.end for x in profiles])[p]
-    short = (start < first) | (end > last + 1e-9 * np.maximum(1.0, np.abs(end)))
-    slack = 1e-9 * np.maximum(1.0, np.abs(end) + wheelbase)
-    short |= (wheelbase > 0) & ((start - wheelbase < first - slack)
-                                | (end + wheelbase > last + slack))  # fmt: skip
-    for i in np.flatnonzero(short):
-        _one_crossing(args, int(i))
-    for k, bridge in enumerate(bridges):
-        try:
-            kind.check_bridge(bridge)
-        except ValueError as exc:
-            raise ValueError(f"crossing {int(np.argmax(b == k))}: {exc}") from None
-    return Batch(
-        bridges=bridges,
-        vehicles=vehicles,
-        profiles=profiles,
-        bridge=b,
-        vehicle=v,
-        profile=p,
-        speed=speed,
-        bridge_start=start,
-        coupled=_flags("coupled", args["coupled"], n),
-        convective=_flags("convective", args["convective"], n),
-        modes=_batch_modes(kind, args["modes"], n),
-    )
-
-
-def _crossing_notes(kind: type[CrossingModel], batch: Batch, i: int, dt: float | None) -> list[str]:
-    """:func:`simulate`'s checks of crossing ``i`` on its grid (node count, step) and its
-    sentences on inputs outside their intended ranges; errors name the crossing."""
-    try:
-        setup = kind.one_of(batch, i)
-        default = setup.default_time_step()[0]
-        system, bridge = setup.system, setup.bridge
-        profile = batch.profiles[batch.profile[i]]
-        stop = setup.bridge_start + bridge.length + system.wheelbase
-        step = default if dt is None else dt
-        grid = node_grid(bridge, profile, setup.speed, setup.bridge_start, step, stop,
-                         vehicle=system)  # fmt: skip
-        notes = input_notes(bridge, system, profile, setup.speed, default)[1]
-        notes.append(check_step(grid.dt_max, default, dt, kind.max_omega_dt))
-    except (TypeError, ValueError) as exc:
-        raise type(exc)(f"crossing {i}: {exc}") from None
-    return [text for text in notes if text]
-
-
-def _check_steps(
-    kind: type[CrossingModel], batch: Batch, defaults: np.ndarray, dt: float | None
-) -> None:
-    """The checks :func:`simulate` makes on a crossing's grid, for a batch.
-
-    Bounds written with arrays (nodes at most ``n_axles (samples + supports) + 3`` plus one
-    per ``speed * dt``; the longest step at most ``dt``) find the crossings that may have too
-    many nodes, too long a step, or an input outside its intended range; those alone get
-    :func:`simulate`'s checks on their grid (:func:`_crossing_notes`), which raise or give the
-    sentences of one warning for the batch.
-    """
-    n = len(batch)
-    step = defaults if dt is None else np.full(n, dt)
-    systems = [as_system(x) for x in batch.vehicles]
-    axles = np.array([x.offsets.size for x in systems])[batch.vehicle]
-    wheelbase = np.array([x.wheelbase for x in systems])[batch.vehicle]
-    samples = np.array([x.x.size for x in batch.profiles])[batch.profile]
-    first = np.array([x.start for x in batch.profiles])[batch.profile]
-    supports = np.array([len(x.supports) for x in batch.bridges])[batch.bridge]
-    length = np.array([x.length for x in batch.bridges])[batch.bridge]
-    stop = batch.bridge_start + length + wheelbase
-    nodes = axles * (samples + supports) + 3 + (stop - first) / (batch.speed * step)
-    suspects = ~(nodes <= MAX_NODES)
-    ratio = DEFAULT_OMEGA_DT * step * (1.0 + 1e-8) / defaults  # omega_max dt, at most
-    suspects |= ratio > min(kind.max_omega_dt, RANGES["step_accuracy"].soft[1])
-    low, high = RANGES["speed"].soft
-    suspects |= (batch.speed < low) | (batch.speed > high)
-    spacing = np.array([_uneven_spacing(x) or np.nan for x in batch.profiles])[batch.profile]
-    f_max = DEFAULT_OMEGA_DT / defaults / (2.0 * math.pi)
-    suspects |= spacing * 2.0 * f_max / batch.speed > RANGES["sample_spacing"].soft[1]
-    suspects |= np.array([bool(road_notes(x)) for x in batch.profiles])[batch.profile]  # h23
-    outside: dict[int, list[str]] = {}
-    for i in np.flatnonzero(suspects):
-        notes = _crossing_notes(kind, batch, int(i), dt)
-        if notes:
-            outside[int(i)] = notes
-    if outside:
-        first_i = next(iter(outside))
-        warn_outside(
-            f"{len(outside)} of {n} crossings have inputs outside their intended ranges "
-            f"(crossing {first_i}: {'; '.join(outside[first_i])})"
-        )
 
 
 def simulate_many(
@@ -541,15 +344,17 @@ def simulate_many(
         "convective": convective,
         "modes": modes,
     }
-    args = {name: _as_list(name, value) for name, value in args.items()}
+    args = {name: as_list(name, value) for name, value in args.items()}
     if dt is not None:
         dt = check.positive("dt", dt)
-    batch = _batch(kind, args)
+    batch = kind.resolve_modes(batch_of(kind, args))
     n = len(batch)
     defaults = kind.default_time_steps(batch)
     steps = defaults if dt is None else np.full(n, dt)
-    _check_steps(kind, batch, defaults, dt)
+    check_steps(kind, batch, defaults, dt)
     warn_unresolved_roads(batch)  # issue 20 hook (h20): contact forces set by the sampling
+    for text in kind.batch_notes(batch):
+        warnings.warn(text, TruncationWarning, stacklevel=2)
     n_spans = batch.n_spans()
     peaks = np.full((n, max(PEAK_SLOTS, int(n_spans.max()))), np.nan)
     summaries = np.full((n, SUMMARY_SIZE), np.nan)
@@ -562,10 +367,11 @@ def simulate_many(
     models, grids = kind.models_and_grids(batch, steps, wide)
     for i, setup, grid in zip(wide, models, grids, strict=True):
         # more spans than the summary holds: one crossing with its histories
-        summary, _, fields, _ = setup.integrate(grid)
+        summary, contact, fields, _ = setup.integrate(grid)
         summaries[i] = summary
         dt_max[i] = grid.dt_max
-        peaks[i, : setup.bridge.n_spans] = setup.span_peaks(summary, fields, grid)
+        history = setup.midspan_history({**fields, "axle_contact_force": contact}, grid)
+        peaks[i, : setup.bridge.n_spans] = setup.span_peaks(summary, history, grid)
     daf = np.where(_never_pushed_down(peaks), np.nan, peaks)
     daf /= kind.span_static_deflections_of(batch)
     systems = [as_system(x) for x in batch.vehicles]

@@ -151,21 +151,24 @@ def start_summaries(state, first, n_spans, lane):
 
 
 # rows of a lane kernel's state after the summary: a step whose midspan rate changes sign,
-# kept for the refinement of its peak
-P_TURN, P_M0, P_M1, P_V0, P_V1, P_H, P_SPAN = range(7)
-P_COUNT = 7
+# kept for the refinement of its peak; one set of MARK_SET rows per span (span 2's after span 1's)
+MARK_TURN, MARK_M0, MARK_M1, MARK_V0, MARK_V1, MARK_H, MARK_SPAN = range(7)
+MARK_SET = 7
+MARK_COUNT = 2 * MARK_SET
 
 
 @numba.njit(cache=True, inline="always")
-def track_peak(state, first, lane, on, span_index, m0, m1, v0, v1, h):
+def track_lane_peak(state, first, lane, on, span_index, m0, m1, v0, v1, h):
     """Account a step's midspan displacements ``m0, m1`` and rates ``v0, v1``, masked by ``on``.
 
     The larger downward end value is kept at once; a step where the rate changes sign is
     marked in the rows after the summary (``first + SUMMARY_SIZE + P_*``) for
     :func:`refine_peaks`, which finds the extreme inside it.  ``span_index`` is 0 for span 1,
-    1 for span 2.
+    1 for span 2; each span has its own marked step, so that a kernel tracks both midspans
+    at every step (the span DAF reads the whole run).
     """
-    turn = on & (v0 * v1 <= 0.0)
+    # (both rates zero, as at rest on the approach: no extreme inside the step)
+    turn = on & (v0 * v1 <= 0.0) & ((v0 != 0.0) | (v1 != 0.0))
     peak = -m0 if -m0 >= -m1 else -m1
     i1 = (first + S_PEAK) * LANES + lane
     i2 = (first + S_PEAK + 1) * LANES + lane
@@ -174,36 +177,74 @@ def track_peak(state, first, lane, on, span_index, m0, m1, v0, v1, h):
     keep = on & (not turn)
     state[i1] = peak if keep & (span_index == 0.0) & (peak > p1) else p1
     state[i2] = peak if keep & (span_index == 1.0) & (peak > p2) else p2
-    pending = first + SUMMARY_SIZE
-    state[(pending + P_TURN) * LANES + lane] = 1.0 if turn else 0.0
-    state[(pending + P_M0) * LANES + lane] = m0
-    state[(pending + P_M1) * LANES + lane] = m1
-    state[(pending + P_V0) * LANES + lane] = v0
-    state[(pending + P_V1) * LANES + lane] = v1
-    state[(pending + P_H) * LANES + lane] = h
-    state[(pending + P_SPAN) * LANES + lane] = span_index
+    pending = first + SUMMARY_SIZE + (MARK_SET if span_index == 1.0 else 0)
+    state[(pending + MARK_TURN) * LANES + lane] = 1.0 if turn else 0.0
+    state[(pending + MARK_M0) * LANES + lane] = m0
+    state[(pending + MARK_M1) * LANES + lane] = m1
+    state[(pending + MARK_V0) * LANES + lane] = v0
+    state[(pending + MARK_V1) * LANES + lane] = v1
+    state[(pending + MARK_H) * LANES + lane] = h
+    state[(pending + MARK_SPAN) * LANES + lane] = span_index
 
 
 @numba.njit(cache=True, inline="always")
-def refine_peaks(state, first):
-    """The peaks of the steps :func:`track_peak` marked: the cubic Hermite's extreme inside.
+def track_lane_peaks(state, first, lane, on, m0, m1, v0, v1, h):
+    """:func:`track_lane_peak` of span 1 with ``m0, m1, v0, v1`` and of span 2 with their
+    negatives (the one-coordinate beam's midspans, ``+z_b`` and ``-z_b``): both turn in the
+    same steps, so one marked step serves both (``MARK_SPAN`` 2)."""
+    # (both rates zero, as at rest on the approach: no extreme inside the step)
+    turn = on & (v0 * v1 <= 0.0) & ((v0 != 0.0) | (v1 != 0.0))
+    keep = on & (not turn)
+    down = -m0 if -m0 >= -m1 else -m1
+    up = m0 if m0 >= m1 else m1
+    i1 = (first + S_PEAK) * LANES + lane
+    i2 = (first + S_PEAK + 1) * LANES + lane
+    p1 = state[i1]
+    p2 = state[i2]
+    state[i1] = down if keep & (down > p1) else p1
+    state[i2] = up if keep & (up > p2) else p2
+    pending = first + SUMMARY_SIZE
+    state[(pending + MARK_TURN) * LANES + lane] = 1.0 if turn else 0.0
+    state[(pending + MARK_M0) * LANES + lane] = m0
+    state[(pending + MARK_M1) * LANES + lane] = m1
+    state[(pending + MARK_V0) * LANES + lane] = v0
+    state[(pending + MARK_V1) * LANES + lane] = v1
+    state[(pending + MARK_H) * LANES + lane] = h
+    state[(pending + MARK_SPAN) * LANES + lane] = 2.0
+
+
+@numba.njit(cache=True, inline="always")
+def refine_peaks(state, first, sets=2):
+    """The peaks of the steps :func:`track_lane_peak` marked: the cubic Hermite's extreme inside.
 
     As ``downward_peak`` of the base module, whose functions it calls; few steps are marked
     (a midspan rate changes sign about twice a period), so this loop is rarely busy.
+    ``sets``: the marked-step sets in use (1: :func:`track_lane_peaks` only).
     """
-    pending = first + SUMMARY_SIZE
-    for lane in range(LANES):
-        if state[(pending + P_TURN) * LANES + lane] > 0.0:
-            peak = -hermite_min(
-                state[(pending + P_M0) * LANES + lane],
-                state[(pending + P_M1) * LANES + lane],
-                state[(pending + P_V0) * LANES + lane],
-                state[(pending + P_V1) * LANES + lane],
-                state[(pending + P_H) * LANES + lane],
-            )
-            i = (first + S_PEAK + np.int64(state[(pending + P_SPAN) * LANES + lane])) * LANES
-            if peak > state[i + lane]:
-                state[i + lane] = peak
+    for span in range(sets):
+        pending = first + SUMMARY_SIZE + span * MARK_SET
+        marked = False  # a packed test of the lanes first: most steps mark none
+        for lane in range(LANES):
+            marked = marked | (state[(pending + MARK_TURN) * LANES + lane] > 0.0)
+        if not marked:
+            continue
+        for lane in range(LANES):
+            if state[(pending + MARK_TURN) * LANES + lane] > 0.0:
+                m0 = state[(pending + MARK_M0) * LANES + lane]
+                m1 = state[(pending + MARK_M1) * LANES + lane]
+                v0 = state[(pending + MARK_V0) * LANES + lane]
+                v1 = state[(pending + MARK_V1) * LANES + lane]
+                h = state[(pending + MARK_H) * LANES + lane]
+                pair = state[(pending + MARK_SPAN) * LANES + lane] == 2.0
+                i = (first + S_PEAK + span) * LANES
+                peak = -hermite_min(m0, m1, v0, v1, h)
+                if peak > state[i + lane]:
+                    state[i + lane] = peak
+                if pair:  # track_lane_peaks: span 2 is the negative of span 1
+                    i = (first + S_PEAK + 1) * LANES
+                    peak = -hermite_min(-m0, -m1, -v0, -v1, h)
+                    if peak > state[i + lane]:
+                        state[i + lane] = peak
 
 
 @numba.njit(cache=True, inline="always")

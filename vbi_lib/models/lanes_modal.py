@@ -15,9 +15,12 @@ is the study's :class:`~vbi_lib.Vehicle`.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numba
 import numpy as np
 
+from ..bridges import Bridge
 from ..modes import beam_modes, shape_values
 from ..units import g as GRAVITY
 from .base import SUMMARY_SIZE
@@ -25,7 +28,7 @@ from .lanes import (
     CHUNK,
     CONTRACT,
     LANES,
-    P_COUNT,
+    MARK_COUNT,
     T_INNER,
     T_LENGTH,
     T_SHARED,
@@ -44,18 +47,26 @@ from .lanes import (
     start_summaries,
     start_walkers,
     track_force,
-    track_peak,
+    track_lane_peak,
 )
+from .statics import influence_pieces
 
-# columns of the table of crossings, after the shared ones
+# columns of the table of crossings, after the shared ones, then the influence pieces
 T_MV, T_KV, T_CV, T_COUPLED, T_CONVECTIVE, T_DESIGN = range(T_SHARED, T_SHARED + 6)
-T_COUNT = T_SHARED + 6
+T_PIECES = T_SHARED + 6
+# the exact influence line of each midspan (mode acceleration), per span j of two: the
+# breaks b0..b3, the inverse widths of the three pieces, then each piece's cubic c0..c3
+I_BREAK, I_WIDTH, I_CUBIC = 0, 4, 7
+I_COUNT = 19
+T_COUNT = T_PIECES + 2 * I_COUNT
 # per design (bridge and number of modes) and mode: wavenumber, 2 zeta omega, omega^2,
 # phi at the two midspans, then the coefficients (a, b, c, d) in span 1 and in span 2, then
 # whether the mode has exponential parts (c or d above rounding, see EXP_NEGLIGIBLE)
 M_KAPPA, M_TWO_ZW, M_W2, M_MID1, M_MID2, M_COEF = range(6)
 M_EXP = M_COEF + 8
-M_COUNT = M_EXP + 1
+# phi at the two midspans over omega^2: the series' static part of the mode acceleration
+M_G1, M_G2 = M_EXP + 1, M_EXP + 2
+M_COUNT = M_EXP + 3
 #: Exponential parts with ``|c|, |d|`` at most this times ``max(|a|, |b|)`` of their span are
 #: left out (the sine modes of a simply supported span carry ``c, d`` of rounding size only);
 #: exp(-ks) <= 1, so the shape changes by at most this fraction of its amplitude.
@@ -63,16 +74,19 @@ EXP_NEGLIGIBLE = 1e-14
 # per-lane constants, then the per-mode constants from row K_COUNT on (mode-major)
 (K_SPEED, K_START, K_SPAN, K_LENGTH, K_KV, K_CV, K_MV, K_WEIGHT, K_CPL, K_EPS_SPEED,
  K_CV_EPS_SPEED, K_INNER) = range(12)  # fmt: skip
-K_COUNT = 12
+K_PIECES = 12  # the influence pieces, laid out as the table's (I_* per span)
+K_COUNT = K_PIECES + 2 * I_COUNT
 # rows of the scratch of the shapes: s from the span's left support, L_j - s, span 2 or not,
 # and the polynomial parts of exp(-k s) and exp(-k (L_j - s))
 S_S, S_REST, S_SECOND, S_E0, S_E1 = range(5)
 S_COUNT = 5
 # z: per-lane values, the summary from Z_SUMMARY (and the marked turning step after it)
-(Z_UV, Z_VV, Z_LAST_FORCE, Z_LAST_X, Z_LAST_ON, Z_H, Z_RATE, Z_ON, Z_SPAN, Z_ACTIVE, Z_UB,
- Z_UBD, Z_FORCE, Z_MID, Z_MIDV, Z_NUM, Z_DEN, Z_SV, Z_MID_END, Z_MIDV_END,
- Z_SUMMARY) = range(21)  # fmt: skip
-Z_COUNT = Z_SUMMARY + SUMMARY_SIZE + P_COUNT
+# (the node's midspan values: the series M, its rate V and the series' static part S of each
+# midspan; the previous node's P*: mode-acceleration value, series rate, correction, step)
+(Z_UV, Z_VV, Z_LAST_FORCE, Z_LAST_X, Z_LAST_ON, Z_H, Z_RATE, Z_ON, Z_ACTIVE, Z_UB,
+ Z_UBD, Z_FORCE, Z_NUM, Z_DEN, Z_SV, Z_M1, Z_M2, Z_V1, Z_V2, Z_S1, Z_S2, Z_PM1, Z_PM2,
+ Z_PV1, Z_PV2, Z_PC1, Z_PC2, Z_PH, Z_SUMMARY) = range(29)  # fmt: skip
+Z_COUNT = Z_SUMMARY + SUMMARY_SIZE + MARK_COUNT
 # y: per-mode values, mode-major
 Y, V, YT, VT, R, INV_DD = range(6)
 Y_COUNT = 6
@@ -199,12 +213,10 @@ def _step(r, rows, nodes, shapes, const, y, z, n_modes):
         z[_k(Z_H, lane)] = dx / speed
         z[_k(Z_RATE, lane)] = (eb - ea) / dx * speed if active else 0.0
         z[_k(Z_ON, lane)] = 1.0 if on else 0.0
-        # span 2 from the interior support on (as the grid's span_of_step)
-        z[_k(Z_SPAN, lane)] = 1.0 if middle >= const[_k(K_INNER, lane)] else 0.0
         z[_k(Z_UB, lane)] = 0.0
         z[_k(Z_UBD, lane)] = 0.0
-        z[_k(Z_MID, lane)] = 0.0
-        z[_k(Z_MIDV, lane)] = 0.0
+        for f in range(Z_M1, Z_S2 + 1):
+            z[_k(f, lane)] = 0.0
     # ---- the state at the start of the step: sums over the modes
     for n in range(n_modes):
         for lane in range(LANES):
@@ -215,10 +227,12 @@ def _step(r, rows, nodes, shapes, const, y, z, n_modes):
             qd = y[_y(n, V, lane)]
             z[_k(Z_UB, lane)] += pa * q
             z[_k(Z_UBD, lane)] += pa * qd + const[_k(K_EPS_SPEED, lane)] * dpa * q
-            second = z[_k(Z_SPAN, lane)] == 1.0
-            pm = const[_m(n, M_MID2, lane)] if second else const[_m(n, M_MID1, lane)]
-            z[_k(Z_MID, lane)] += pm * q
-            z[_k(Z_MIDV, lane)] += pm * qd
+            z[_k(Z_M1, lane)] += const[_m(n, M_MID1, lane)] * q
+            z[_k(Z_M2, lane)] += const[_m(n, M_MID2, lane)] * q
+            z[_k(Z_V1, lane)] += const[_m(n, M_MID1, lane)] * qd
+            z[_k(Z_V2, lane)] += const[_m(n, M_MID2, lane)] * qd
+            z[_k(Z_S1, lane)] += const[_m(n, M_G1, lane)] * pa
+            z[_k(Z_S2, lane)] += const[_m(n, M_G2, lane)] * pa
     # ---- the suspension force at the start (right limit), from the equations
     for lane in range(LANES):
         cpl = const[_k(K_CPL, lane)]
@@ -242,6 +256,13 @@ def _step(r, rows, nodes, shapes, const, y, z, n_modes):
         z[_k(Z_UV, lane)] = uv + h * vv + beta * av  # predictors
         z[_k(Z_VV, lane)] = vv + gamma * av
         z[_k(Z_SV, lane)] = kv * beta + cv * gamma
+    # ---- the step that ended at this node, at both midspans
+    for lane in range(LANES):
+        on = z[_k(Z_ON, lane)] > 0.0
+        xa = nodes[_node(N_X, rows, r, lane)]
+        _close_step(z, const, lane, xa, on, const[_k(K_WEIGHT, lane)] + z[_k(Z_FORCE, lane)])
+        z[_k(Z_PH, lane)] = z[_k(Z_H, lane)] if z[_k(Z_ACTIVE, lane)] > 0.0 else 0.0
+    refine_peaks(z, Z_SUMMARY)
     # ---- predictors of the modes, and the sums the end of the step needs
     for lane in range(LANES):
         z[_k(Z_UB, lane)] = 0.0
@@ -305,9 +326,7 @@ def _step(r, rows, nodes, shapes, const, y, z, n_modes):
         av = force / const[_k(K_MV, lane)]
         z[_k(Z_UV, lane)] += 0.25 * h * h * av
         z[_k(Z_VV, lane)] += 0.5 * h * av
-        z[_k(Z_MID_END, lane)] = 0.0
-        z[_k(Z_MIDV_END, lane)] = 0.0
-    # ---- the modes at the end of the step, and the midspan of the step's span
+    # ---- the modes at the end of the step
     for n in range(n_modes):
         for lane in range(LANES):
             on = z[_k(Z_ON, lane)] > 0.0
@@ -318,15 +337,7 @@ def _step(r, rows, nodes, shapes, const, y, z, n_modes):
             qd = y[_y(n, VT, lane)] + 0.5 * h * acc
             y[_y(n, Y, lane)] = q
             y[_y(n, V, lane)] = qd
-            second = z[_k(Z_SPAN, lane)] == 1.0
-            pm = const[_m(n, M_MID2, lane)] if second else const[_m(n, M_MID1, lane)]
-            z[_k(Z_MID_END, lane)] += pm * q
-            z[_k(Z_MIDV_END, lane)] += pm * qd
     for lane in range(LANES):
-        on = z[_k(Z_ON, lane)] > 0.0
-        track_peak(z, Z_SUMMARY, lane, on, z[_k(Z_SPAN, lane)], z[_k(Z_MID, lane)],
-                   z[_k(Z_MID_END, lane)], z[_k(Z_MIDV, lane)], z[_k(Z_MIDV_END, lane)],
-                   z[_k(Z_H, lane)])  # fmt: skip
         # the contact force at the step's end: the crossing's last node uses it
         active = z[_k(Z_ACTIVE, lane)] > 0.0
         i = _k(Z_LAST_FORCE, lane)
@@ -335,6 +346,76 @@ def _step(r, rows, nodes, shapes, const, y, z, n_modes):
         z[i] = nodes[_node(N_X, rows, r + 1, lane)] if active else z[i]
         i = _k(Z_LAST_ON, lane)
         z[i] = z[_k(Z_ON, lane)] if active else z[i]
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy", fastmath=CONTRACT)
+def _influence(const, lane, j, s):
+    """The exact downward deflection of midspan ``j`` under a unit load at ``s`` [m/N]."""
+    base = K_PIECES + j * I_COUNT
+    # every piece evaluated, then the one holding s picked: no gather, so the lanes stay packed
+    values = 0.0
+    for k in range(3):
+        u = (s - const[_k(base + I_BREAK + k, lane)]) * const[_k(base + I_WIDTH + k, lane)]
+        c = base + I_CUBIC + 4 * k
+        value = ((const[_k(c + 3, lane)] * u + const[_k(c + 2, lane)]) * u
+                 + const[_k(c + 1, lane)]) * u + const[_k(c, lane)]  # fmt: skip
+        start = const[_k(base + I_BREAK + k, lane)]
+        values = value if (k == 0) | (s >= start) else values
+    return values
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy", fastmath=CONTRACT)
+def _close_step(z, const, lane, x, on, contact):
+    """Track the step that ends at this node, at both midspans (the whole run).
+
+    The headline midspan displacement is the mode-acceleration one (``modal``'s
+    ``midspan_history``): the series plus ``F_c (sum_n phi_n(m_j) phi_n(x) / omega_n^2 -
+    eta_j(x))``, ``F_c`` the contact force (the step's from this node on; zero off the bridge).
+    The previous node's values (``Z_P*``) and this node's give the step's peak, the series'
+    rates exact and the correction's its secant; then this node's values become the
+    previous ones.  ``Z_PH`` 0: no step to close (the first node).
+    """
+    s = x - const[_k(K_START, lane)]
+    force = contact if on else 0.0
+    c1 = force * (z[_k(Z_S1, lane)] - (_influence(const, lane, 0, s) if on else 0.0))
+    c2 = force * (z[_k(Z_S2, lane)] - (_influence(const, lane, 1, s) if on else 0.0))
+    m1 = z[_k(Z_M1, lane)] + c1
+    m2 = z[_k(Z_M2, lane)] + c2
+    h = z[_k(Z_PH, lane)]
+    closing = h > 0.0
+    hh = h if closing else 1.0
+    r1 = (c1 - z[_k(Z_PC1, lane)]) / hh
+    r2 = (c2 - z[_k(Z_PC2, lane)]) / hh
+    track_lane_peak(z, Z_SUMMARY, lane, closing, 0.0, z[_k(Z_PM1, lane)], m1,
+               z[_k(Z_PV1, lane)] + r1, z[_k(Z_V1, lane)] + r1, hh)  # fmt: skip
+    track_lane_peak(z, Z_SUMMARY, lane, closing, 1.0, z[_k(Z_PM2, lane)], m2,
+               z[_k(Z_PV2, lane)] + r2, z[_k(Z_V2, lane)] + r2, hh)  # fmt: skip
+    z[_k(Z_PM1, lane)] = m1
+    z[_k(Z_PM2, lane)] = m2
+    z[_k(Z_PV1, lane)] = z[_k(Z_V1, lane)]
+    z[_k(Z_PV2, lane)] = z[_k(Z_V2, lane)]
+    z[_k(Z_PC1, lane)] = c1
+    z[_k(Z_PC2, lane)] = c2
+
+
+@numba.njit(cache=True, error_model="numpy", fastmath=CONTRACT)
+def _close_last(y, z, const, n_modes):
+    """Close each lane's last step at its last node (every axle at or past the bridge's
+    end, where the correction vanishes): the series alone, from the final modes."""
+    for lane in range(LANES):
+        for f in range(Z_M1, Z_S2 + 1):
+            z[_k(f, lane)] = 0.0
+    for n in range(n_modes):
+        for lane in range(LANES):
+            q = y[_y(n, Y, lane)]
+            qd = y[_y(n, V, lane)]
+            z[_k(Z_M1, lane)] += const[_m(n, M_MID1, lane)] * q
+            z[_k(Z_M2, lane)] += const[_m(n, M_MID2, lane)] * q
+            z[_k(Z_V1, lane)] += const[_m(n, M_MID1, lane)] * qd
+            z[_k(Z_V2, lane)] += const[_m(n, M_MID2, lane)] * qd
+    for lane in range(LANES):
+        _close_step(z, const, lane, 0.0, False, 0.0)
+        z[_k(Z_PH, lane)] = 0.0
     refine_peaks(z, Z_SUMMARY)
 
 
@@ -363,6 +444,8 @@ def _block(lanes, px, pe, roads, table, counts, designs, summaries, widest):
         eps = row[T_CONVECTIVE]
         const[_k(K_EPS_SPEED, lane)] = eps * speed
         const[_k(K_CV_EPS_SPEED, lane)] = row[T_CV] * eps * speed
+        for f in range(2 * I_COUNT):
+            const[_k(K_PIECES + f, lane)] = row[T_PIECES + f]
         design = np.int64(row[T_DESIGN])
         for n in range(n_modes):
             for f in range(M_COUNT):
@@ -384,6 +467,7 @@ def _block(lanes, px, pe, roads, table, counts, designs, summaries, widest):
         for lane in range(LANES):
             grid[N_X, 0, lane] = grid[N_X, chunk, lane]
             grid[N_E, 0, lane] = grid[N_E, chunk, lane]
+    _close_last(y, z, const, n_modes)
     for lane in range(LANES):
         # the last node: the force at the end of the last step
         track_force(z, Z_SUMMARY, lane, z[_k(Z_LAST_ON, lane)] > 0.0,
@@ -401,6 +485,25 @@ def _run(blocks, px, pe, roads, table, counts, designs, summaries, widest):
 def _run_serial(blocks, px, pe, roads, table, counts, designs, summaries, widest):
     for b in range(blocks.shape[0]):
         _block(blocks[b], px, pe, roads, table, counts, designs, summaries, widest)
+
+
+@lru_cache(maxsize=1024)
+def _pieces_row(bridge: Bridge) -> np.ndarray:
+    """The table's influence columns of a bridge: the exact influence line of each midspan
+    in cubic pieces (:func:`~vbi_lib.models.statics.influence_pieces`) padded to three
+    pieces a span; a one-span bridge's second span is zero."""
+    row = np.zeros(2 * I_COUNT)
+    breaks, cubics = influence_pieces(bridge)
+    for j in range(bridge.n_spans):
+        part = row[j * I_COUNT : (j + 1) * I_COUNT]
+        b = np.full(4, breaks[j, -1])
+        b[: breaks.shape[1]] = breaks[j]
+        part[I_BREAK : I_BREAK + 4] = b
+        width = np.diff(b)
+        part[I_WIDTH : I_WIDTH + 3] = np.divide(1.0, width, out=np.zeros(3), where=width > 0)
+        part[I_CUBIC : I_CUBIC + 4 * cubics.shape[1]] = cubics[j].ravel()
+    row.setflags(write=False)
+    return row
 
 
 def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
@@ -444,5 +547,9 @@ def run(batch, dt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: ANN001
         size = np.maximum(coef[:, :, 0], coef[:, :, 1])
         exps = (np.maximum(coef[:, :, 2], coef[:, :, 3]) > EXP_NEGLIGIBLE * size).any(axis=1)
         designs[d, M_EXP, :count] = exps
+        designs[d, M_G1, :count] = mid[0] / basis.omega**2
+        designs[d, M_G2, :count] = (mid[1] if bridge.n_spans > 1 else 0.0) / basis.omega**2
+    pieces = np.array([_pieces_row(bridge) for bridge in batch.bridges])
+    table[:, T_PIECES:] = pieces[batch.bridge]
     # a block holds one number of modes
     return launch((_run, _run_serial), batch, table, batch.modes, counts, designs)

@@ -27,7 +27,7 @@ from .lanes import (
     CHUNK,
     CONTRACT,
     LANES,
-    P_COUNT,
+    MARK_COUNT,
     T_INNER,
     T_LENGTH,
     T_SHARED,
@@ -44,7 +44,7 @@ from .lanes import (
     start_summaries,
     start_walkers,
     track_force,
-    track_peak,
+    track_lane_peaks,
 )
 
 # columns of the table of crossings, after the shared ones
@@ -61,7 +61,7 @@ NODES = CHUNK + 1
 # rows of a block's state: u_v, u_v', z_b, z_b', the contact force at the last node, then
 # the summary (layout of the base module) from row Z_SUMMARY
 Z_U, Z_V, Z_Q, Z_QD, Z_LAST_FORCE, Z_LAST_X, Z_LAST_ON, Z_SUMMARY = range(8)
-Z_COUNT = Z_SUMMARY + SUMMARY_SIZE + P_COUNT
+Z_COUNT = Z_SUMMARY + SUMMARY_SIZE + MARK_COUNT
 
 
 @numba.njit(cache=True, inline="always")
@@ -127,8 +127,6 @@ def _steps(buf, const, state):
             h = dx / speed
             rate = (eb - ea) / dx * speed if active else 0.0
             middle = 0.5 * (xa + xb) - const[K_START * LANES + lane]
-            # span 2 from the interior support on (as the grid's span_of_step)
-            span_index = 1.0 if middle >= const[K_INNER * LANES + lane] else 0.0
             on = active & (middle > 0.0) & (middle < const[K_LENGTH * LANES + lane])
             psa = buf[_at(B_PSI, r, lane)] if on else 0.0
             psm = buf[_at(B_PSI_MID, r, lane)] if on else 0.0
@@ -181,10 +179,8 @@ def _steps(buf, const, state):
             ud_new = ud + sixth * (a1 + 2.0 * a2 + 2.0 * a3 + a4)
             q_new = q + sixth * (qd + 2.0 * qd2 + 2.0 * qd3 + qd4)
             qd_new = qd + sixth * (b1 + 2.0 * b2 + 2.0 * b3 + b4)
-            # midspan displacement of span j: psi(mid_j) z_b = +z_b (span 1), -z_b (span 2)
-            sign = 1.0 if span_index == 0.0 else -1.0
-            track_peak(state, Z_SUMMARY, lane, on, span_index, sign * q, sign * q_new,
-                       sign * qd, sign * qd_new, h)  # fmt: skip
+            # every midspan over the whole run: psi(mid_j) z_b = +z_b (span 1), -z_b (span 2)
+            track_lane_peaks(state, Z_SUMMARY, lane, active, q, q_new, qd, qd_new, h)
             track_force(state, Z_SUMMARY, lane, on, weight + f1, xa, h)
             # the contact force at the step's end: the crossing's last node uses it
             f_end = _force(kv, cv, eb, rate, u_new, ud_new, kzb, czb, q_new, qd_new)
@@ -198,7 +194,7 @@ def _steps(buf, const, state):
             state[Z_V * LANES + lane] = ud_new
             state[Z_Q * LANES + lane] = q_new
             state[Z_QD * LANES + lane] = qd_new
-        refine_peaks(state, Z_SUMMARY)
+        refine_peaks(state, Z_SUMMARY, 1)  # one set: track_lane_peaks's
 
 
 @numba.njit(cache=True, error_model="numpy")

@@ -37,33 +37,46 @@ study's sprung mass (:class:`~vbi_lib.Vehicle`) keeps the compiled kernel below,
 crossings and batches (twice as fast with few modes); the general kernel reproduces it to
 1e-14 (a vehicle's ``.system`` runs through the general kernel; the tests compare them).
 
-Static deflection and DAF
--------------------------
-The model's static deflection is the largest static midspan deflection under the vehicle's
-static axle loads over all its positions, from the same N modes (the crawl run of a
-finite-element study): the modal influence line of each midspan summed over the axles
-(:func:`vbi_lib.modes.largest_static_deflection` for one axle).  The DAF of span ``j``
-divides the largest downward midspan deflection while an axle is on span ``j`` by it.  On
-other layouts than one span or two equal spans, the spans differ in stiffness and each
-span's DAF divides by its own largest static midspan deflection (``Crossing.static_deflection``
-is then the largest of them).  Moments, shears and displacements at any section, each with
-its own static counterpart, come from :meth:`~vbi_lib.models.results.Crossing.sections`.
+DAF: mode acceleration, over the exact beam's statics
+-----------------------------------------------------
+The N-mode series converges slowly where a span's own modes are high (a short span beside a
+long one), so the displacement every span DAF reads is the mode-acceleration one (e.g.
+Craig & Kurdila; Chopra): the series plus the static part it leaves out,
+
+.. math:: u_j(t) = \sum_n \phi_n(m_j) q_n + \sum_a F_{c,a} \Big[\sum_n
+    \frac{\phi_n(m_j)\phi_n(x_a)}{\omega_n^2} - \eta_j(x_a)\Big],
+
+``F_{c,a}`` the force axle ``a`` presses on the bridge and :math:`\eta_j` the exact influence
+line of midspan ``j`` (three-moment equation, in cubic pieces:
+:func:`~vbi_lib.models.statics.influence_pieces`).  At a crawl it is the exact static
+deflection whatever ``N``.  The DAF of span ``j`` divides its largest downward value over
+the whole run by the exact beam's largest static deflection of the same midspan under the
+vehicle's axle loads, every axle in every position (:mod:`~vbi_lib.models.statics`); inside
+a step the series' rate is exact and the correction's is its secant.  The series DAF (over
+its own N-mode statics) is checked too: when it differs by more than 1 %, or ``modes``
+leaves out a span's own fundamental, the crossing says so in ``notes`` and a
+:class:`~vbi_lib.validity.TruncationWarning`.  ``modes=None`` takes every mode up to 2.3
+times the highest simply supported frequency of any one span (:func:`default_modes`).
+Moments, shears and displacements at any section, each with its own static counterpart,
+come from :meth:`~vbi_lib.models.results.Crossing.sections`.
 
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, replace
 from functools import lru_cache
 
 import numba
 import numpy as np
 
 from ..bridges import Bridge
-from ..modes import BeamModes, beam_modes, largest_static_deflection, shape_values
+from ..continuous_beams import count_below
+from ..modes import BeamModes, beam_modes, shape_values
 from ..vehicles import Vehicle, as_system
 from . import modal_kernel
-from .axles import event_log, largest_over_positions, logged_events, vehicle_vector
+from .axles import event_log, logged_events, vehicle_vector
 from .base import (
     DEFAULT_OMEGA_DT,
     P_DAMPING,
@@ -73,19 +86,19 @@ from .base import (
     P_START,
     P_STIFFNESS,
     PEAK_SLOTS,
+    S_PEAK,
     SUMMARY_SIZE,
     CrossingModel,
     Grid,
-    downward_peak,
-    history_peaks,
     parameters,
+    peaks_of,
     start_summary,
     track_contact,
-    track_peak,
 )
 from .batch import Batch
 from .lanes_modal import run as run_lanes
 from .results import Crossing
+from .statics import influence_pieces, span_statics
 
 
 def default_time_step(bridge: Bridge, vehicle: object, modes: int) -> float:
@@ -107,49 +120,6 @@ def default_time_step(bridge: Bridge, vehicle: object, modes: int) -> float:
     highest = float(as_system(vehicle).circular_frequencies.max())
     omega = max(highest, float(basis.omega[: min(2, basis.count)].max()))
     return DEFAULT_OMEGA_DT / omega
-
-
-@lru_cache(maxsize=256)
-def _axle_group_static(bridge: Bridge, modes: int, offsets: tuple, loads: tuple) -> tuple:
-    """Largest midspan deflection of each span under the axle loads at their worst position."""
-    basis = beam_modes(bridge, modes)
-    weights = basis.shape(np.array(bridge.midspans)) / basis.omega**2
-    offsets_arr = np.array(offsets)
-    loads_arr = np.array(loads)
-
-    def deflection(front: np.ndarray, span: int) -> np.ndarray:
-        xi = front[:, None] - offsets_arr[None, :]
-        on = (xi >= 0.0) & (xi <= bridge.length)
-        values = np.zeros(front.size)
-        for a in range(offsets_arr.size):
-            rows = np.flatnonzero(on[:, a])
-            if rows.size:
-                values[rows] += loads_arr[a] * (basis.shape(xi[rows, a]) @ weights[span])
-        return values
-
-    last = bridge.length + float(offsets_arr.max())
-    return tuple(
-        largest_over_positions(lambda f, j=j: deflection(f, j), 0.0, last)
-        for j in range(bridge.n_spans)
-    )
-
-
-def span_static_deflections(bridge: Bridge, vehicle: object, modes: int) -> np.ndarray:
-    """The N-mode beam's largest static midspan deflection of each span under the axle loads [m].
-
-    One axle: :func:`~vbi_lib.modes.largest_static_deflection` times the weight; several:
-    the modal influence lines of the midspans summed over the axles, at the group's worst
-    position for each span.
-    """
-    s = as_system(vehicle)
-    if s.n_axles == 1:
-        return np.array(largest_static_deflection(bridge, modes)) * s.weight
-    return np.array(_axle_group_static(bridge, modes, tuple(s.offsets), tuple(s.static_loads)))
-
-
-def static_deflection(bridge: Bridge, vehicle: object, modes: int) -> float:
-    """The largest of :func:`span_static_deflections` [m]: the crawl run's static deflection."""
-    return float(span_static_deflections(bridge, vehicle, modes).max())
 
 
 # ---------------------------------------------------------------------------- kernel
@@ -208,8 +178,6 @@ def _kernel(
     w2 = omega * omega
     uv = elevation[0]  # at rest in static equilibrium on the profile
     vv = 0.0
-    mid0 = np.zeros(n_spans)
-    midv0 = np.zeros(n_spans)
     start_summary(summary, n_spans)
     if record:
         vehicle_hist[0, 0] = uv
@@ -247,15 +215,6 @@ def _kernel(
             contact[k] = weight + force
         if on:
             track_contact(summary, weight + force, xa, h)
-        # midspan displacement and rate at the start
-        for j in range(n_spans):
-            s0 = 0.0
-            s1 = 0.0
-            for n in range(n_modes):
-                s0 += phi_mid[j, n] * y[n]
-                s1 += phi_mid[j, n] * v[n]
-            mid0[j] = s0
-            midv0[j] = s1
         # ---- predictors
         for n in range(n_modes):
             yt[n] = y[n] + h * v[n] + beta * a[n]
@@ -294,18 +253,36 @@ def _kernel(
             for n in range(n_modes):
                 q_hist[k + 1, n] = y[n]
                 qd_hist[k + 1, n] = v[n]
-        if on:
-            j = span_k - 1
-            s0 = 0.0
-            s1 = 0.0
-            for n in range(n_modes):
-                s0 += phi_mid[j, n] * y[n]
-                s1 += phi_mid[j, n] * v[n]
-            track_peak(summary, span_k, downward_peak(mid0[j], s0, midv0[j], s1, h))
     if record:
         contact[n_nodes - 1] = weight + force_b
     if span_of_step[n_nodes - 2] > 0:
         track_contact(summary, weight + force_b, x[n_nodes - 1], 0.0)
+
+
+@numba.njit(cache=True)
+def _correction_values(s, force, supports, kappa, coef, g, breaks, cubics, out):
+    """``out[i, j] = force[i] (sum_n g[j, n] phi_n(s[i]) - eta_j(s[i]))`` at stations ``s``
+    from the bridge start: the mode-acceleration correction, the exact influence line
+    ``eta_j`` from its cubic pieces (``breaks``, ``cubics``:
+    :func:`~vbi_lib.models.statics.influence_pieces`), as the lane kernel evaluates it."""
+    n_modes = kappa.shape[0]
+    phi = np.empty(n_modes)
+    dphi = np.empty(n_modes)
+    ddphi = np.empty(n_modes)
+    last = breaks.shape[1] - 2
+    for i in range(s.shape[0]):
+        shape_values(s[i], supports, kappa, coef, phi, dphi, ddphi)
+        for j in range(out.shape[1]):
+            series = 0.0
+            for n in range(n_modes):
+                series += g[j, n] * phi[n]
+            k = 0
+            while k < last and s[i] >= breaks[j, k + 1]:
+                k += 1
+            width = breaks[j, k + 1] - breaks[j, k]
+            u = (s[i] - breaks[j, k]) / width if width > 0.0 else 0.0
+            eta = ((cubics[j, k, 3] * u + cubics[j, k, 2]) * u + cubics[j, k, 1]) * u
+            out[i, j] = force[i] * (series - (eta + cubics[j, k, 0]))
 
 
 # ---------------------------------------------------------------------------- model
@@ -319,11 +296,23 @@ class ModalCrossing(Crossing):
         The :class:`~vbi_lib.modes.BeamModes` used.
     modal_coordinates, modal_velocities
         ``q_n`` and ``dq_n/dt``, shape ``(n_time, N)`` [kg^1/2 m, kg^1/2 m/s].
+    series_daf
+        Per span, the N-mode series' DAF: the largest downward value of
+        :attr:`series_midspan_displacement` over the run, over the N-mode beam's largest
+        static deflection of the same midspan (``daf`` is the mode-acceleration one, over
+        the exact beam's); the two agree as ``N`` grows.
     """
 
     modes: BeamModes
     modal_coordinates: np.ndarray
     modal_velocities: np.ndarray
+    series_daf: np.ndarray
+
+    @property
+    def series_midspan_displacement(self) -> np.ndarray:
+        """The N-mode series at each midspan, ``sum_n phi_n(m_j) q_n``, ``(n_time, n_spans)``
+        [m] (``midspan_displacement`` adds the static part the series leaves out)."""
+        return self.modal_coordinates @ self.modes.shape(np.array(self.bridge.midspans)).T
 
     @property
     def frequencies_hz(self) -> np.ndarray:
@@ -336,12 +325,63 @@ class ModalCrossing(Crossing):
 
 
 def check_modes(modes: object) -> int:
-    """A number of modes: a whole number >= 1."""
+    """A number of modes: a whole number >= 1, or 0 for ``None`` (:func:`default_modes`)."""
+    if modes is None:
+        return 0
     if isinstance(modes, bool) or not isinstance(modes, int | np.integer) or modes < 1:
         raise ValueError(
-            f"modes={modes!r} must be a whole number of modes >= 1 (model='modal' needs it)"
+            f"modes={modes!r} must be a whole number of modes >= 1, or None for the default "
+            "(every mode up to 2.3 times the highest simply supported span frequency)"
         )
     return int(modes)
+
+
+#: The default modes reach this multiple of the highest simply supported frequency of any one
+#: span: above a span's clamped-clamped frequency (2.27 times), which bounds its own fundamental.
+DEFAULT_MODES_REACH = 2.3
+
+
+@lru_cache(maxsize=256)
+def default_modes(bridge: Bridge) -> int:
+    """The number of modes ``modes=None`` takes: every mode of the continuous beam with a
+    frequency up to :data:`DEFAULT_MODES_REACH` times the highest simply supported frequency
+    of any one span, at least one.
+
+    A span's own fundamental lies between its simply supported and its clamped-clamped
+    frequency (2.27 times), whatever its neighbours, so the default includes every span's.
+
+    Examples
+    --------
+    One span: its first mode only (the second is at 4 times); a 10 m span beside a 200 m
+    one: the 10 m span's fundamental and the 31 modes of the long span below it.
+
+    >>> from vbi_lib import Bridge
+    >>> default_modes(Bridge(30.0, 1, 1e10, 5000.0)), default_modes(Bridge(25.0, 2, 1e10, 5000.0))
+    (1, 2)
+    >>> default_modes(Bridge.continuous([10.0, 200.0], 1e10, 5000.0))
+    32
+    """
+    reach = math.sqrt(DEFAULT_MODES_REACH) * math.pi / min(bridge.spans)  # wavenumber [1/m]
+    return max(1, count_below(reach, list(bridge.spans)))
+
+
+@lru_cache(maxsize=1024)
+def missing_spans(bridge: Bridge, count: int) -> tuple[int, ...]:
+    """Spans (1-based) with none of their own modes among the first ``count``: no mode
+    whose midspan amplitude there is at least half its largest midspan amplitude."""
+    phi = np.abs(beam_modes(bridge, count).shape(np.array(bridge.midspans)))  # (n_spans, N)
+    own = phi >= 0.5 * phi.max(axis=0, keepdims=True)
+    return tuple(j + 1 for j in range(bridge.n_spans) if not own[j].any())
+
+
+def missing_note(spans: tuple[int, ...], count: int) -> str:
+    """The sentence on spans whose own fundamental ``modes`` leaves out."""
+    which = ", ".join(str(j) for j in spans)
+    return (
+        f"modes={count} leaves out the fundamental of span {which}: its series DAF would not "
+        "have converged; the span DAF is the mode-acceleration one, exact in its statics, and "
+        "modes=None includes every span's fundamental"
+    )
 
 
 class Modal(CrossingModel):
@@ -350,13 +390,15 @@ class Modal(CrossingModel):
     name = "modal"
     description = "N exact Euler-Bernoulli modes (any spans); Newmark average acceleration"
     result_type = ModalCrossing
+    statics = "exact"  # the mode-acceleration headline converges to the exact beam's
+    summary_peaks = False  # the headline needs the contact forces: from the histories
 
     lane_kernel = staticmethod(run_lanes)
 
     def __init__(self, bridge, vehicle, speed, bridge_start, *, coupled, convective, modes):  # noqa: ANN001
         super().__init__(bridge, vehicle, speed, bridge_start, coupled=coupled,
                          convective=convective, modes=modes)  # fmt: skip
-        self.count = check_modes(modes)
+        self.count = check_modes(modes) or default_modes(bridge)
         self.basis = beam_modes(bridge, self.count)
         self.params = parameters(vehicle, speed, bridge_start, bridge.span)
         self.phi_mid = np.ascontiguousarray(self.basis.shape(np.array(bridge.midspans)))
@@ -378,40 +420,73 @@ class Modal(CrossingModel):
                  for i in first]  # fmt: skip
         return np.array(steps)[inverse]
 
-    @classmethod
-    def span_static_deflections_of(cls, batch: Batch) -> np.ndarray:
-        """As the base's; one-axle vehicles scale the unit load's value per bridge and modes."""
-        one_axle = np.array([as_system(v).n_axles == 1 for v in batch.vehicles])
-        if not one_axle[batch.vehicle].all():
-            return super().span_static_deflections_of(batch)
-        first, inverse = batch.groups(batch.bridge, batch.modes)
-        unit = np.full((first.size, max(PEAK_SLOTS, int(batch.n_spans().max()))), np.nan)
-        for k, i in enumerate(first):
-            bridge = batch.bridges[batch.bridge[i]]
-            each = np.array(largest_static_deflection(bridge, int(batch.modes[i])))
-            unit[k, : each.size] = np.full(each.size, each.max()) if bridge.study_layout else each
-        weight = np.array([as_system(v).weight for v in batch.vehicles])[batch.vehicle]
-        return unit[inverse] * weight[:, None]
-
-    def static_deflection(self) -> float:
-        return static_deflection(self.bridge, self.system, self.count)
-
     def _vector(self, grid: Grid) -> np.ndarray:
         return vehicle_vector(self.system, self.system.static_position(grid.road[:, 0]))
 
-    def span_static_deflections(self) -> np.ndarray:
-        each = span_static_deflections(self.bridge, self.system, self.count)
-        if self.bridge.study_layout:  # the spans are alike: one value, as the study's model
-            return np.full(each.size, each.max())
-        return each
+    def _correction(self, contact: np.ndarray, grid: Grid) -> np.ndarray:
+        """``c_j`` at the nodes ``(n_nodes, n_spans)`` [m]: ``sum_a F_ca (sum_n phi_n(m_j)
+        phi_n(x_a) / omega_n^2 - eta_j(x_a))``, ``F_ca`` axle a's contact force from the node on
+        (zero for an axle off the bridge over the step, and at the last node)."""
+        n_nodes, n_spans = grid.x.size, self.bridge.n_spans
+        out = np.zeros((n_nodes, n_spans))
+        g = np.ascontiguousarray(self.phi_mid / self.basis.omega**2)  # (n_spans, N)
+        breaks, cubics = influence_pieces(self.bridge)
+        b = self.basis
+        for a, offset in enumerate(self.system.offsets):
+            on = np.flatnonzero(grid.axle_span[a, : n_nodes - 1] > 0)
+            if on.size == 0:
+                continue
+            s = np.clip(grid.x[on] - offset - self.bridge_start, 0.0, self.bridge.length)
+            part = np.zeros((on.size, n_spans))
+            _correction_values(s, np.ascontiguousarray(contact[on, a]), np.array(b.supports),
+                               np.array(b.wavenumber), np.array(b.coefficients), g, breaks,
+                               cubics, part)  # fmt: skip
+            out[on] += part
+        return out
 
-    def span_peaks(self, summary, fields, grid):  # noqa: ANN001, ANN201
-        if self.bridge.n_spans <= PEAK_SLOTS:
-            return super().span_peaks(summary, fields, grid)
-        peaks = np.empty(self.bridge.n_spans)
-        history_peaks(fields["midspan_displacement"], fields["modal_velocities"] @ self.phi_mid.T,
-                      grid.x, self.speed, grid.span_of_step, peaks)  # fmt: skip
-        return peaks
+    def midspan_history(self, fields, grid):  # noqa: ANN001, ANN201
+        # the mode-acceleration displacement: the series plus the statics the series misses
+        correction = self._correction(fields["axle_contact_force"], grid)
+        h = np.diff(grid.x) / self.speed
+        secant = np.zeros_like(correction)
+        secant[:-1] = np.diff(correction, axis=0) / np.where(h > 0, h, 1.0)[:, None]
+        value = fields["modal_coordinates"] @ self.phi_mid.T + correction
+        return value, fields["modal_velocities"] @ self.phi_mid.T, secant
+
+    def checks(self, fields, grid, daf):  # noqa: ANN001, ANN201
+        warned = []
+        missing = missing_spans(self.bridge, self.count)
+        if missing:
+            warned.append(missing_note(missing, self.count))
+        series = fields["modal_coordinates"] @ self.phi_mid.T
+        peaks = peaks_of(series, fields["modal_velocities"] @ self.phi_mid.T,
+                         np.zeros_like(series), grid.x, self.speed)  # fmt: skip
+        peaks[~(peaks > 0.0)] = np.nan
+        series_daf = peaks / span_statics(self.bridge, self.system, "modal", self.count)
+        quiet = []
+        apart = np.abs(series_daf - daf) > 0.01 * np.abs(daf)
+        if apart.any():
+            j = int(np.nanargmax(np.where(apart, np.abs(series_daf - daf), np.nan)))
+            quiet.append(
+                f"the {self.count}-mode series gives span {j + 1} a DAF of {series_daf[j]:.4g} "
+                f"against {daf[j]:.4g} by mode acceleration, the headline, which converges "
+                "faster (its statics are exact): more modes bring the series to it"
+            )
+        return quiet, warned, {"series_daf": series_daf}
+
+    @classmethod
+    def batch_notes(cls, batch: Batch) -> list[str]:
+        """The spans whose own fundamental a crossing's ``modes`` leaves out, once per bridge
+        and number of modes."""
+        first, _ = batch.groups(batch.bridge, batch.modes)
+        out = []
+        for i in first:
+            bridge = batch.bridges[batch.bridge[i]]
+            count = int(batch.modes[i])
+            missing = missing_spans(bridge, count)
+            if missing:
+                out.append(missing_note(missing, count))
+        return out
 
     def _zeta(self) -> np.ndarray:
         return np.full(self.count, self.bridge.damping_ratio)
@@ -471,46 +546,23 @@ class Modal(CrossingModel):
         return summary, contact[:, None], fields, note
 
     @classmethod
+    def resolve_modes(cls, batch: Batch) -> Batch:
+        """``modes=None`` (0 in the batch) made each bridge's :func:`default_modes`."""
+        if (batch.modes > 0).all():
+            return batch
+        defaults = np.array([default_modes(b) for b in batch.bridges])[batch.bridge]
+        return replace(batch, modes=np.where(batch.modes > 0, batch.modes, defaults))
+
+    @classmethod
     def integrate_setups(cls, models, grids):  # noqa: ANN001, ANN206
-        """Any vehicles: the general kernel, one crossing per parallel task."""
-        n = len(models)
-        counts = [m.count for m in models]
-
-        def offsets_of(sizes: list[int]) -> np.ndarray:
-            return np.concatenate(([0], np.cumsum(sizes))).astype(np.int64)
-
-        most = max(m.bridge.n_spans for m in models)
-        phi_mid = np.full((n, max(2, most), max(counts)), np.nan)
-        supports = np.full((n, most + 1), np.nan)
-        coef = np.zeros((sum(counts), most, 4))
-        first = 0
-        for i, m in enumerate(models):
-            phi_mid[i, : m.bridge.n_spans, : m.count] = m.phi_mid
-            supports[i, : m.bridge.n_spans + 1] = m.basis.supports
-            coef[first : first + m.count, : m.bridge.n_spans] = m.basis.coefficients
-            first += m.count
-        vectors = [m._vector(g) for m, g in zip(models, grids, strict=True)]
-        summaries = np.full((n, SUMMARY_SIZE), np.nan)
-        modal_kernel.batch_kernel(
-            offsets_of([g.x.size for g in grids]),
-            np.concatenate([g.x for g in grids]),
-            np.concatenate([g.road.ravel() for g in grids]),
-            np.concatenate([g.axle_span.ravel() for g in grids]),
-            offsets_of([g.road.size for g in grids]),
-            np.array([m.params for m in models]),
-            offsets_of(counts),
-            supports,
-            np.concatenate([m.basis.wavenumber for m in models]),
-            coef,
-            np.concatenate([m.basis.omega for m in models]),
-            np.concatenate([m._zeta() for m in models]),
-            phi_mid,
-            np.array([m.bridge.n_spans for m in models], dtype=np.int64),
-            np.array([m.coupled for m in models], dtype=np.bool_),
-            np.array([m.convective for m in models], dtype=np.bool_),
-            np.concatenate(vectors),
-            offsets_of([v.size for v in vectors]),
-            np.array([[m.system.n_dofs, m.system.n_axles] for m in models], dtype=np.int64),
-            summaries,
-        )
+        """Any vehicles: one crossing at a time with its histories, whose mode-acceleration
+        peaks (:meth:`span_peaks`) go into the summary, as :func:`vbi_lib.simulate`'s."""
+        summaries = np.full((len(models), SUMMARY_SIZE), np.nan)
+        for i, (model, grid) in enumerate(zip(models, grids, strict=True)):
+            summary, contact, fields, _ = model.integrate(grid)
+            summary[S_PEAK : S_PEAK + PEAK_SLOTS] = np.nan
+            width = min(model.bridge.n_spans, PEAK_SLOTS)
+            history = model.midspan_history({**fields, "axle_contact_force": contact}, grid)
+            summary[S_PEAK : S_PEAK + width] = model.span_peaks(summary, history, grid)[:width]
+            summaries[i] = summary
         return summaries

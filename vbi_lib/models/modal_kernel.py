@@ -33,13 +33,12 @@ from .axles import (
     RETRY,
     locate_switch,
     log_event,
-    occupied,
     solve_in_place,
     track_axles,
     track_flight,
     unpack,
 )
-from .base import P_SPEED, P_START, S_MIN_FORCE, downward_peak, start_summary, track_peak
+from .base import P_SPEED, P_START, S_MIN_FORCE, start_summary
 
 
 @numba.njit(cache=True)
@@ -100,7 +99,6 @@ def kernel(x, road, axle_span, params, supports, kappa, coef, omega, zeta, phi_m
     gmat = np.empty((n_axles, n_modes))
     system = np.empty((n_axles, n_axles))
     rhs = np.empty((n_axles, 1))
-    spans = np.zeros(max(n_spans, 1), dtype=np.bool_)
     start_gap = np.zeros(n_axles)
     end_gap = np.zeros(n_axles)
 
@@ -236,19 +234,9 @@ def kernel(x, road, axle_span, params, supports, kappa, coef, omega, zeta, phi_m
             q1[j] = qt[j] + beta * s
             qd1[j] = qdt[j] + gamma * s
 
-    def midspan(j, qq):
-        s = 0.0
-        for m in range(n_modes):
-            s += phi_mid[j, m] * qq[m]
-        return s
-
     def accept(h, k):
-        """Peaks over the (sub)step just taken, then the trial state becomes the state."""
-        for j in range(n_spans):
-            if spans[j]:
-                peak = downward_peak(midspan(j, q), midspan(j, q1), midspan(j, qd),
-                                     midspan(j, qd1), h)  # fmt: skip
-                track_peak(summary, j + 1, peak)
+        """The trial state becomes the state (the span peaks come from the histories: the
+        mode-acceleration displacement needs the contact forces, ``modal.Modal``)."""
         track_flight(summary, flying, axle_span, k, h)
         for i in range(n):
             u[i] = u1[i]
@@ -302,7 +290,6 @@ def kernel(x, road, axle_span, params, supports, kappa, coef, omega, zeta, phi_m
         track_axles(summary, pressing, W, off, x[k], axle_span, step, h, unilateral, weight)
         if last:
             break
-        occupied(axle_span, k, n_spans, spans)
         # one integrator call site for the whole step: phase 0 steps to the end of the
         # step; if a tyre's force changed sign, phase 1 brackets the switch of ``axle``
         # (Illinois, each trial a step from th0) and phase 2 takes the step to it.
@@ -360,27 +347,3 @@ def kernel(x, road, axle_span, params, supports, kappa, coef, omega, zeta, phi_m
         at_end = True
         if record:
             record_state(k + 1)
-
-
-@numba.njit(cache=True, parallel=True)
-def batch_kernel(offsets, x, road, axle_span, road_offsets, params, mode_offsets, supports,
-                 kappa, coef, omega, zeta, phi_mid, n_spans, coupled, convective, vec,
-                 vec_offsets, dims, summaries):  # fmt: skip
-    """Many crossings of any vehicles in parallel (layout of the one-coordinate batch)."""
-    for i in numba.prange(offsets.shape[0] - 1):
-        a = offsets[i]
-        b = offsets[i + 1]
-        ma = mode_offsets[i]
-        mb = mode_offsets[i + 1]
-        n = dims[i, 0]
-        n_axles = dims[i, 1]
-        shape = (n_axles, b - a)
-        dummy = np.empty((1, 1))
-        kernel(x[a:b], road[road_offsets[i] : road_offsets[i + 1]].reshape(shape),
-               axle_span[road_offsets[i] : road_offsets[i + 1]].reshape(shape), params[i],
-               np.ascontiguousarray(supports[i, : n_spans[i] + 1]), kappa[ma:mb],
-               np.ascontiguousarray(coef[ma:mb, : n_spans[i]]), omega[ma:mb], zeta[ma:mb],
-               np.ascontiguousarray(phi_mid[i, : n_spans[i], : mb - ma]), coupled[i],
-               convective[i], vec[vec_offsets[i] : vec_offsets[i + 1]], n, n_axles, dummy,
-               dummy, np.empty((1, 2 * n)), np.empty((1, n_axles)), summaries[i],
-               np.empty((0, 4)), np.zeros(1, dtype=np.int64))  # fmt: skip

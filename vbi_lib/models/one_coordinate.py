@@ -25,10 +25,16 @@ integrated by the general kernel of :mod:`~vbi_lib.models.coordinate_kernel`, of
 equations above are the one-axle case.  The study's sprung mass (:class:`~vbi_lib.Vehicle`)
 keeps the compiled 4x4 kernel below, single crossings and batches: it is 1.5 times faster,
 and the general kernel reproduces it to 1e-14 (its ``.system`` runs through the general
-kernel; the tests compare the two).  With
-several axles the DAF divides by the largest static midspan deflection of the one-shape
-beam under the axle loads at their worst position, :math:`\max_x |\sum_a \psi(x_a) W_a|
-/ k^*` (one axle: :math:`W / k^*`, (90)-(91)).
+kernel; the tests compare the two).
+
+DAF
+---
+The DAF of span ``j`` is the largest downward deflection of its midspan,
+:math:`\psi(m_j) z_b`, over the whole run, divided by the largest static deflection of the
+same midspan of the one-shape beam under the vehicle's static axle loads, every axle in every
+position of the group: :math:`\max_p \psi(m_j) \sum_a \psi(p - o_a) P_a / k^*`, span by span
+(:func:`~vbi_lib.models.statics.span_statics`, ``"one-shape"``).  One axle gives
+:math:`P / k^*` on every span, the study's (90)-(91).
 
 Integration
 -----------
@@ -58,7 +64,7 @@ from ..bridges import Bridge
 from ..modes import BeamModes, beam_modes
 from ..vehicles import Vehicle, VehicleSystem, as_system
 from . import coordinate_kernel
-from .axles import event_log, largest_over_positions, logged_events, vehicle_vector
+from .axles import event_log, logged_events, vehicle_vector
 from .base import (
     DEFAULT_OMEGA_DT,
     P_COUNT,
@@ -69,7 +75,6 @@ from .base import (
     P_SPEED,
     P_START,
     P_STIFFNESS,
-    PEAK_SLOTS,
     SUMMARY_SIZE,
     CrossingModel,
     Grid,
@@ -289,11 +294,11 @@ def _kernel(x, elevation, span_of_step, params, n_spans, coupled, convective, st
         if record:
             for i in range(4):
                 states[k + 1, i] = z[i]
-        if on:
-            # midspan displacement of span j is psi(mid_j) z_b = +z_b (span 1), -z_b (span 2)
-            sign = 1.0 if span == 1 else -1.0
-            track_peak(summary, span, downward_peak(sign * za, sign * z[2], sign * da,
-                                                    sign * z[3], h))  # fmt: skip
+        # every midspan over the whole run: psi(mid_j) z_b = +z_b (span 1), -z_b (span 2)
+        for j in range(n_spans):
+            sign = 1.0 if j == 0 else -1.0
+            track_peak(summary, j + 1, downward_peak(sign * za, sign * z[2], sign * da,
+                                                     sign * z[3], h))  # fmt: skip
     # the last node starts no step: its force uses the last step's matrices and slope
     k = n_nodes - 1
     on = span_of_step[k - 1] > 0
@@ -386,26 +391,6 @@ def highest_circular_frequency(
     return float(np.abs(np.linalg.eigvals(np.array(stack))).max())
 
 
-def static_deflection(bridge: Bridge, vehicle: object) -> float:
-    """The one-shape beam's largest static midspan deflection under the axle loads [m].
-
-    ``max over positions of |sum_a psi(x_a) W_a| / k*`` (axles off the bridge carry
-    nothing); for one axle ``W / k*``, the study's (90)-(91).
-    """
-    s = as_system(vehicle)
-    if s.n_axles == 1:
-        return bridge.static_deflection(s.weight)
-    wave = math.pi / bridge.span
-
-    def deflection(front: np.ndarray) -> np.ndarray:
-        xi = front[:, None] - s.offsets[None, :]
-        on = (xi >= 0.0) & (xi <= bridge.length)
-        return np.abs(np.where(on, np.sin(wave * xi), 0.0) @ s.static_loads)
-
-    load = largest_over_positions(deflection, 0.0, bridge.length + s.wheelbase)
-    return load / bridge.generalized_stiffness
-
-
 def default_time_step(
     bridge: Bridge, vehicle: object, speed: float, coupled: bool = True, convective: bool = True
 ) -> float:
@@ -451,6 +436,7 @@ class OneCoordinate(CrossingModel):
     description = "the study's beam with one coordinate psi z_b (1 or 2 spans); RK4"
     max_omega_dt = 2.0  # RK4 is stable below 2.8
     result_type = OneCoordinateCrossing
+    statics = "one-shape"  # psi(m_j) sum_a psi(x_a) P_a / k*; one axle: P / k* (90)-(91)
 
     lane_kernel = staticmethod(run_lanes)
 
@@ -490,18 +476,6 @@ class OneCoordinate(CrossingModel):
             steps[~sprung] = super().default_time_steps(batch.take(~sprung))
         return steps
 
-    @classmethod
-    def span_static_deflections_of(cls, batch: Batch) -> np.ndarray:
-        sprung = np.array([_is_sprung_mass(v) for v in batch.vehicles])[batch.vehicle]
-        if not sprung.all():
-            return super().span_static_deflections_of(batch)
-        # one axle: W / k* on every span (90)-(91), as static_deflection
-        weight = np.array([as_system(x).weight for x in batch.vehicles])[batch.vehicle]
-        static = weight / batch.column("bridges", "generalized_stiffness")
-        out = np.repeat(static[:, None], PEAK_SLOTS, axis=1)
-        out[batch.n_spans() < 2, 1] = np.nan
-        return out
-
     def default_time_step(self) -> tuple[float, str]:
         dt = default_time_step(self.bridge, self.vehicle, self.speed, self.coupled, self.convective)
         return dt, (
@@ -509,8 +483,11 @@ class OneCoordinate(CrossingModel):
             "(or the profile step if smaller)"
         )
 
-    def static_deflection(self) -> float:
-        return static_deflection(self.bridge, self.system)
+    def midspan_history(self, fields, grid):  # noqa: ANN001, ANN201
+        # midspan j deflects psi(m_j) z_b: +z_b on span 1, -z_b on span 2
+        signs = np.array([1.0, -1.0][: self.bridge.n_spans])
+        value = fields["bridge_coordinate"][:, None] * signs
+        return value, fields["bridge_velocity"][:, None] * signs, np.zeros_like(value)
 
     def _vector(self, grid: Grid) -> np.ndarray:
         return vehicle_vector(self.system, self.system.static_position(grid.road[:, 0]))
