@@ -91,9 +91,8 @@ class Crossing(ContactFlags):
         The first degree of freedom, ``(n_time,)``: ``u_v`` [m] of the study's sprung mass,
         the sprung mass of a quarter car, the bounce of a rigid truck.
     midspan_displacement
-        ``(n_time, n_spans)`` midspan displacement of each span [m], the one the span DAFs
-        read: ``psi(m_j) z_b`` (one-coordinate model); the mode-acceleration displacement,
-        the N-mode series plus the static part the series leaves out (modal model).
+        ``(n_time, n_spans)`` [m], what the span DAFs read: ``psi(m_j) z_b`` (one-coordinate
+        model), the mode-acceleration displacement (modal model).
     axle_contact_force
         ``(n_time, n_axles)``: force each axle presses on the road [N] (negative: tension of
         a bilateral contact; 0: a tyre in flight).
@@ -103,13 +102,11 @@ class Crossing(ContactFlags):
         Per node: 0 while the first axle is off the bridge, else the span of the step from
         the node.
     daf
-        Per span, the largest downward deflection of its midspan over the whole run, over the
-        largest downward static deflection of the same midspan under the vehicle's static
-        axle loads, every axle in every position, by the model's own statics (the one-shape
-        beam's, one axle ``P / k*`` (88)-(91); the exact beam's for the modal model;
-        :mod:`~vbi_lib.models.statics`).
+        Per span, the largest downward deflection of its midspan over the whole run over the
+        largest static one under the vehicle's axle loads in every position, by the model's
+        own statics (one-shape, one axle ``P / k*`` (88)-(91); exact for the modal model).
     static_deflection
-        The largest of the spans' static deflections the DAFs divide by [m].
+        The largest of those static deflections [m] (:mod:`~vbi_lib.models.statics`).
 
     dt
         Largest time step used [s].
