@@ -6,7 +6,9 @@ readout says why and shows no number, ``result`` becomes ``None`` and the figure
 so what is on the page always matches the controls.  A value a control refuses or clamps is
 explained on the note line (see :mod:`vbi_lib.widgets.controls`), and so is an input the
 model accepts but was not made for (an :class:`~vbi_lib.OutsideValidityWarning`: a speed
-above 150 km/h, an ISO class beyond E).
+above 150 km/h, an ISO class beyond E), and so is how the road was completed (a measured deck
+one or two samples short of the far support).  **Reset** puts every control back to the value
+the explorer started with.
 """
 
 from __future__ import annotations
@@ -100,6 +102,13 @@ class Explorer:
         self._outside_said = False  # the note line shows inputs outside their ranges
         #: The last result's inputs outside their intended ranges, one sentence each.
         self.outside_inputs: list[str] = []
+        #: The values the explorer started with (what **Reset** goes back to).
+        self.start_values = self.values()
+        self.reset_button = w.Button(
+            description="Reset", tooltip="Put every control back to its start value"
+        )
+        self.reset_button.add_class("vbi-reset")
+        self.reset_button.on_click(lambda _button: self.reset())
         self._uploads = tempfile.TemporaryDirectory(prefix="vbi-profiles-")
         self.upload = w.FileUpload(
             accept=".csv,.txt,.dat,.prn", multiple=False, description="upload profile"
@@ -139,6 +148,10 @@ class Explorer:
     def values(self) -> dict[str, Any]:
         """The controls' current values, by parameter."""
         return {name: control.value for name, control in self.controls.items()}
+
+    def reset(self) -> Any:
+        """Every control back to its start value, one recomputation; returns :attr:`result`."""
+        return self.set(**self.start_values)
 
     def scenario(self) -> Scenario:
         """The :class:`Scenario` of the controls (fields without a control keep the default).
@@ -197,7 +210,7 @@ class Explorer:
             else:  # not ours to handle: pass it on
                 warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
         self.outside_inputs = outside
-        self._say_outside(outside)
+        self._say_outside(outside, self._road_notes())
         self._show(result)
         return result
 
@@ -207,10 +220,19 @@ class Explorer:
         self._fresh_notice = True
         self._control_note = message
 
-    def _say_outside(self, outside: list[str]) -> None:
-        """Put the inputs outside their intended ranges on the note line, after any sentence
-        a control said in this change; take them away when the inputs are back inside."""
+    def _road_notes(self) -> list[str]:
+        """How the road was completed (a measured deck a sample or two short), for the notes."""
+        try:
+            return self.scenario().road_notes()
+        except (ValueError, TypeError):
+            return []
+
+    def _say_outside(self, outside: list[str], notes: list[str] | None = None) -> None:
+        """Put the inputs outside their intended ranges (and the road's notes) on the note
+        line, after any sentence a control said in this change; take them away when the
+        inputs are back inside."""
         control, self._control_note = self._control_note, None
+        outside = [*outside, *(notes or [])]
         if outside:
             sentences = ([control] if control else []) + list(dict.fromkeys(outside))
             self.notice.value = notice_html(" ".join(_sentence(s) for s in sentences))
@@ -250,20 +272,20 @@ class Explorer:
             used = set(groups[self.controls[key].value])
             for name in {p for group in groups.values() for p in group}:
                 if name in self.controls:
-                    self.controls[name].layout.display = "" if name in used else "none"
+                    self.controls[name].box.layout.display = "" if name in used else "none"
             if key == "road":
                 self.upload.layout.display = "" if "profile_path" in used else "none"
 
     def _panel(self) -> w.VBox:
-        rows: list[Any] = []
+        rows: list[Any] = [self.reset_button]
         for title, names in SECTIONS.items():
-            present = [self.controls[n] for n in names if n in self.controls]
+            present = [self.controls[n].box for n in names if n in self.controls]
             if not present:
                 continue
             rows.append(w.HTML(f"<b>{title}</b>"))
             rows.extend(present)
             if title == "Road" and "profile_path" in self.controls:
-                rows.insert(rows.index(self.controls["profile_path"]) + 1, self.upload)
+                rows.insert(rows.index(self.controls["profile_path"].box) + 1, self.upload)
         return w.VBox(rows, layout=w.Layout(min_width="28em"))
 
 
