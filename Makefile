@@ -59,11 +59,24 @@ test: setup assets
 	$(PY) -m pytest
 
 # Voila runs explore/explore.ipynb in a kernel and shows only its outputs; 127.0.0.1 only.
+# Every page load starts a kernel (some 450 MB) that Voila cannot shut down when the tab
+# closes (its shutdown request is refused, voila#1458), so kernels idle for EXPLORE_IDLE
+# seconds with no page connected are culled, checked every EXPLORE_CULL seconds; a page that
+# stays open keeps its kernel.  EXPLORE_OPTIONS passes more Voila options (they come last).
+# The vbi template (explore/share/jupyter/voila/templates/vbi) is Voila's lab template
+# without its links to a CDN: every asset is served by Voila itself.
 PORT ?= 8866
+EXPLORE_IDLE ?= 120
+EXPLORE_CULL ?= 30
+EXPLORE_OPTIONS ?=
 explore: setup
 	@echo "vbi explorers: http://127.0.0.1:$(PORT)/ (Ctrl-C stops the app)"
+	JUPYTER_PATH="$(CURDIR)/explore/share/jupyter$${JUPYTER_PATH:+:$$JUPYTER_PATH}" \
 	$(VENV)/bin/voila explore/explore.ipynb --no-browser --Voila.ip=127.0.0.1 \
-		--port=$(PORT) --Voila.port_retries=0
+		--port=$(PORT) --Voila.port_retries=0 --template=vbi \
+		--MappingKernelManager.cull_idle_timeout=$(EXPLORE_IDLE) \
+		--MappingKernelManager.cull_interval=$(EXPLORE_CULL) \
+		--MappingKernelManager.cull_connected=False $(EXPLORE_OPTIONS)
 
 # JupyterLab on 127.0.0.1 (it prints its URL with a token); LAB_OPTIONS adds options.
 # As root (a container) JupyterLab needs --allow-root.
