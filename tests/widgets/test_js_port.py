@@ -44,6 +44,7 @@ from vbi_lib.beam_statics import continuous_statics, static_envelope
 from vbi_lib.profiles import ISO_BAND, ISO_CLASS_MEANS
 from vbi_lib.ranges import RANGES
 from vbi_lib.widgets import Scenario
+from vbi_lib.widgets.report_file import report_files
 from vbi_lib.widgets.scenario import MAX_ROAD_SHIFT_FT, ROAD_SPACING
 
 SCRIPT = Path(__file__).parent / "js" / "port_check.js"
@@ -207,12 +208,16 @@ def port_run(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
         "uniform": [[0, 5], [1, 1000], [7, 17], [99, 2500], [2**32 + 5, 40], [2**40 + 3, 3]],
         "next_fast_len": [1, 5, 7, 11, 13, 97, 1000, 1001, 7441, 13201, 13501, 39999],
     }
-    (folder / "cases.json").write_text(json.dumps({"cases": cases, "probes": probes}))
+    reports = [[values, [values["speed_mph"]], f"case-{i}"] for i, values in enumerate(cases[:20])]
+    reports.append([{**cases[0], "truck_damping": 0.01}, [40.0], "refused"])
+    reports.append([{**cases[1], "truck_damping": 0.2}, [40.0, 95.0], "too-fast"])
+    text = json.dumps({"cases": cases, "probes": probes, "report_cases": reports})
+    (folder / "cases.json").write_text(text)
     subprocess.run([node, str(SCRIPT), str(folder / "cases.json"), str(folder / "out")],
                    check=True, timeout=900, cwd=ROOT)  # fmt: skip
     data = json.loads((folder / "out" / "results.json").read_text())
     arrays = np.fromfile(folder / "out" / "arrays.f64", dtype="<f8")
-    return {"cases": cases, "probes": probes, "data": data, "arrays": arrays}
+    return {"cases": cases, "probes": probes, "reports": reports, "data": data, "arrays": arrays}
 
 
 def _array(run: dict[str, Any], where: list[int]) -> np.ndarray:
@@ -227,6 +232,32 @@ def test_the_port_draws_numpys_random_phases_and_scipys_fft_length(port_run: dic
         assert np.array_equal(np.array(got), expected), f"seed {seed}"
     for n, got in zip(probes["next_fast_len"], probed["next_fast_len"], strict=True):
         assert got == scipy.fft.next_fast_len(n, real=True), n
+
+
+def test_the_page_writes_the_report_parameter_files_the_live_explorers_write(
+    port_run: dict,
+) -> None:
+    """The static explorers' report files are the live ones': the parameter file byte for byte
+    (or both refuse with the same message), the deck's stations exactly and its elevations to
+    rounding (the browser's sines are not numpy's to the last bit);
+    tests/widgets/test_report_file.py checks that vbi-report takes them."""
+    for (values, speeds, name), got in zip(port_run["reports"], port_run["data"]["reports"],
+                                           strict=True):  # fmt: skip
+        try:
+            files = report_files(values, speeds, name=name)
+        except ValueError as error:
+            assert got.get("error") == str(error), name
+            continue
+        assert "error" not in got, f"{name}: the page refused: {got['error']}"
+        assert [f["name"] for f in got["files"]] == [f.name for f in files.files], name
+        assert got["files"][0]["text"] == files.files[0].text, f"{name}: the YAML differs"
+        for mine, theirs in zip(got["files"][1:], files.files[1:], strict=True):
+            a = np.loadtxt(mine["text"].splitlines(), delimiter=",")
+            b = np.loadtxt(theirs.text.splitlines(), delimiter=",")
+            assert np.array_equal(a[:, 0], b[:, 0]), f"{name}: deck stations differ"
+            scale = max(float(np.abs(b[:, 1]).max()), 1e-12)
+            np.testing.assert_allclose(a[:, 1], b[:, 1], rtol=0, atol=1e-12 * scale, err_msg=name)
+        assert got["note"] == files.note
 
 
 def test_the_ports_constants_are_the_librarys(port_run: dict) -> None:

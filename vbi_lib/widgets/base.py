@@ -13,6 +13,8 @@ the explorer started with.
 
 from __future__ import annotations
 
+import base64
+import html
 import tempfile
 import warnings
 from pathlib import Path
@@ -24,6 +26,7 @@ from ..validity import OutsideValidityWarning
 from .controls import ROAD_PARAMETERS, VEHICLE_PARAMETERS, make_controls
 from .figure import FigureImage
 from .readouts import error_html, notice_html
+from .report_file import ReportFiles, report_files, write_report_files
 from .scenario import Scenario
 
 __all__ = ["Explorer"]
@@ -85,6 +88,8 @@ class Explorer:
     """
 
     parameters: ClassVar[tuple[str, ...]] = ()
+    #: What the explorer shows, in file names: ``crossing``, ``speed`` or ``frequency``.
+    kind: ClassVar[str] = "explorer"
     #: Start values that differ from :class:`Scenario`'s for this explorer.
     defaults: ClassVar[dict[str, Any]] = {}
     figure_size: ClassVar[tuple[float, float]] = (7.2, 4.6)
@@ -109,6 +114,14 @@ class Explorer:
         )
         self.reset_button.add_class("vbi-reset")
         self.reset_button.on_click(lambda _button: self.reset())
+        self.report_button = w.Button(
+            description="Report parameters",
+            tooltip="Write this setting as a parameter file that vbi-report accepts",
+        )
+        self.report_button.add_class("vbi-report")
+        self.report_button.on_click(lambda _button: self._offer_report_files())
+        #: Links to download the last report parameter files (data: URLs, no server needed).
+        self.report_links = w.HTML()
         self._uploads = tempfile.TemporaryDirectory(prefix="vbi-profiles-")
         self.upload = w.FileUpload(
             accept=".csv,.txt,.dat,.prn", multiple=False, description="upload profile"
@@ -148,6 +161,51 @@ class Explorer:
     def values(self) -> dict[str, Any]:
         """The controls' current values, by parameter."""
         return {name: control.value for name, control in self.controls.items()}
+
+    def report_files(self, name: str | None = None) -> ReportFiles:
+        """The current setting as a report parameter file ``vbi-report`` accepts as it is.
+
+        See :mod:`vbi_lib.widgets.report_file`: today's report keys; a road the report cannot
+        generate is written as the deck profile beside it.  ``name`` is the file's name
+        without ``.yaml`` (default ``vbi-<kind>``).
+
+        Raises
+        ------
+        ValueError
+            Controls that describe no crossing, or a setting the report cannot take (the
+            message names the control to change).
+        """
+        values, speeds = self._report_setting()
+        scenario = Scenario(**{k: v for k, v in values.items() if k in _SCENARIO_FIELDS})
+        road = None
+        if not (scenario.road == "iso-class" and scenario.road_shift_ft == 0):
+            profile = scenario.profile()
+            road = (profile, scenario.bridge_start(profile))
+        return report_files(values, speeds, road, name or f"vbi-{self.kind}")
+
+    def write_report_parameters(self, folder: str | Path, name: str | None = None) -> list[Path]:
+        """Write :meth:`report_files` into ``folder``; returns the paths (parameters first)."""
+        return write_report_files(self.report_files(name), folder)
+
+    def _report_setting(self) -> tuple[dict[str, Any], list[float]]:
+        """The values and speeds [mph] the report parameter file describes."""
+        values = self.values()
+        return values, [values["speed_mph"]]
+
+    def _offer_report_files(self) -> None:
+        try:
+            files = self.report_files()
+        except (ValueError, TypeError) as exc:
+            self.report_links.value = notice_html(str(exc))
+            return
+        links = " ".join(
+            f'<a download="{html.escape(f.name)}" href="data:text/plain;charset=utf-8;base64,'
+            f'{base64.b64encode(f.text.encode()).decode()}">{html.escape(f.name)}</a>'
+            for f in files.files
+        )
+        self.report_links.value = (
+            f'<div class="vbi-report-files">Download {links}. {html.escape(files.note)}</div>'
+        )
 
     def reset(self) -> Any:
         """Every control back to its start value, one recomputation; returns :attr:`result`."""
@@ -277,7 +335,7 @@ class Explorer:
                 self.upload.layout.display = "" if "profile_path" in used else "none"
 
     def _panel(self) -> w.VBox:
-        rows: list[Any] = [self.reset_button]
+        rows: list[Any] = [w.HBox([self.reset_button, self.report_button]), self.report_links]
         for title, names in SECTIONS.items():
             present = [self.controls[n].box for n in names if n in self.controls]
             if not present:

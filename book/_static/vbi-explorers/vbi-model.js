@@ -424,25 +424,22 @@
   const MAX_ROAD_SHIFT_FT = 200.0;
   const ROADS = ["flat", "harmonic", "bump", "iso-class", "iso-c10"];
 
-  /** The SI setting of the explorers' control values (fields of vbi_lib.widgets.Scenario).
-   * Returns {setting, notes}; throws RangeError naming the field for values it refuses. */
-  function scenarioSetting(v) {
-    if (!ROADS.includes(v.road)) {
-      throw new RangeError(`road=${JSON.stringify(v.road)} runs only live (make explore); ` +
-        `in the page: ${ROADS.join(", ")}`);
-    }
-    if (v.n_spans !== 1 && v.n_spans !== 2) throw new RangeError(`n_spans=${v.n_spans} must be 1 or 2`);
-    if (!(Number.isInteger(v.modes) && v.modes >= 1 && v.modes <= PORT_MAX_MODES)) {
-      throw new RangeError(`modes=${v.modes} must be a whole number from 1 to ` +
-        `${PORT_MAX_MODES} in the page (more modes: make explore)`);
-    }
+  const roadCache = new Map();
+
+  /** The road of the explorers' control values (Scenario.profile: generated roads 200 ft
+   * longer than the approach and the bridge, every inch, slid back by the shift), remembered
+   * for the last few settings: a slider that does not touch the road reuses it. */
+  function scenarioRoad(v) {
+    const fields = ["road", "approach_ft", "n_spans", "span_ft", "road_shift_ft"];
+    const own = {
+      flat: [], harmonic: ["wavelength_ft", "amplitude_in"],
+      bump: ["bump_height_in", "bump_width_ft", "bump_position_ft"],
+      "iso-class": ["iso_class", "seed"], "iso-c10": ["c10_e6", "waviness", "seed"],
+    }[v.road];
+    const key = JSON.stringify([...fields, ...own].map((f) => v[f]));
+    const cached = roadCache.get(key);
+    if (cached) return cached;
     const notes = [];
-    const span = v.span_ft * ft;
-    const massPerLength = (v.bridge_weight_kip_per_ft * kip) / ft / g;
-    const omegaB = 2.0 * Math.PI * v.bridge_frequency_hz;
-    const EI = (omegaB ** 2 * massPerLength * span ** 4) / Math.PI ** 4;
-    const mass = (v.truck_weight_kip * kip) / g;
-    const omegaV = 2.0 * Math.PI * v.truck_frequency_hz;
     const length = (v.approach_ft + v.n_spans * v.span_ft + MAX_ROAD_SHIFT_FT) * ft;
     let road;
     if (v.road === "flat") road = flatRoad(length, ROAD_SPACING);
@@ -465,6 +462,33 @@
       if (shift >= end - first) throw new RangeError(`road_shift_ft=${v.road_shift_ft} must be shorter than the road`);
       road = segmentShifted(road, first + shift, end, -shift);
     }
+    const out = { road, notes };
+    if (roadCache.size >= 8) roadCache.delete(roadCache.keys().next().value);
+    roadCache.set(key, out);
+    return out;
+  }
+
+  /** The SI setting of the explorers' control values (fields of vbi_lib.widgets.Scenario).
+   * Returns {setting, notes}; throws RangeError naming the field for values it refuses. */
+  function scenarioSetting(v) {
+    if (!ROADS.includes(v.road)) {
+      throw new RangeError(`road=${JSON.stringify(v.road)} runs only live (make explore); ` +
+        `in the page: ${ROADS.join(", ")}`);
+    }
+    if (v.n_spans !== 1 && v.n_spans !== 2) throw new RangeError(`n_spans=${v.n_spans} must be 1 or 2`);
+    if (!(Number.isInteger(v.modes) && v.modes >= 1 && v.modes <= PORT_MAX_MODES)) {
+      throw new RangeError(`modes=${v.modes} must be a whole number from 1 to ` +
+        `${PORT_MAX_MODES} in the page (more modes: make explore)`);
+    }
+    const notes = [];
+    const span = v.span_ft * ft;
+    const massPerLength = (v.bridge_weight_kip_per_ft * kip) / ft / g;
+    const omegaB = 2.0 * Math.PI * v.bridge_frequency_hz;
+    const EI = (omegaB ** 2 * massPerLength * span ** 4) / Math.PI ** 4;
+    const mass = (v.truck_weight_kip * kip) / g;
+    const omegaV = 2.0 * Math.PI * v.truck_frequency_hz;
+    const { road, notes: roadNotes } = scenarioRoad(v);
+    notes.push(...roadNotes);
     const setting = {
       bridge: {
         spans: new Array(v.n_spans).fill(span),
@@ -1382,8 +1406,126 @@
     };
   }
 
+  // ------------------------------------------------------------------------------ reports
+  // vbi_lib.widgets.report_file: the setting as today's report keys (the same text)
+  const REPORT = {
+    vehicleDamping: [0.02, 0.5], // vehicle.damping_ratio
+    maxSpeed: 150 * kph, // speeds
+    maxSpeeds: 20,
+    minApproach: 5.0, // profile.approach_length [m]
+  };
+
+  /** Scenario.road_text: the road in words. */
+  function roadText(v) {
+    let text;
+    if (v.road === "flat") text = "flat";
+    else if (v.road === "harmonic") {
+      text = `harmonic, wavelength ${fmtG(v.wavelength_ft, 6)} ft, amplitude ${fmtG(v.amplitude_in, 6)} in`;
+    } else if (v.road === "bump") {
+      text = `bump ${fmtG(v.bump_height_in, 6)} in high, ${fmtG(v.bump_width_ft, 6)} ft long, ` +
+        `crest ${fmtG(v.bump_position_ft, 6)} ft from the first support`;
+    } else if (v.road === "iso-class") text = `ISO 8608 class ${v.iso_class} (w = 2), seed ${v.seed}`;
+    else text = `ISO 8608 C10 = ${fmtG(v.c10_e6, 6)}e-6 m³, w = ${fmtG(v.waviness, 6)}, seed ${v.seed}`;
+    if (v.road_shift_ft) text += `, shifted ${fmtG(v.road_shift_ft, 6)} ft`;
+    return text;
+  }
+
+  /** A profile coordinate in full: Python's f"{x:.16e}". */
+  function coordinate(value) {
+    const text = (value === 0 ? 0 : value).toExponential(16);
+    return text.replace(/e([+-])(\d)$/, "e$10$2");
+  }
+
+  /** The report parameter file of an explorer's setting (report_file.report_files): an array
+   * of {name, text} (the parameter file, and the deck profile it names if the road is not a
+   * generated ISO class), with the array's note.  Throws RangeError naming the control for a
+   * setting the report cannot take. */
+  function reportParameters(v, speedsMph, name = "vbi-explorer") {
+    const refuse = (control, shown, rule) =>
+      new RangeError(`${control}=${shown} ${rule}; the report parameter file was not written`);
+    const num = (x) => fmtG(x, 10);
+    const [low, high] = REPORT.vehicleDamping;
+    if (!(low <= v.truck_damping && v.truck_damping <= high)) {
+      throw refuse("truck_damping", `${num(v.truck_damping * 100)} %`, `is outside the report's ` +
+        `${num(low * 100)} to ${num(high * 100)} % (vehicle.damping_ratio): change truck damping`);
+    }
+    const speeds = [...new Set(speedsMph.map(Number))].sort((a, b) => a - b);
+    if (!(speeds.length >= 1 && speeds.length <= REPORT.maxSpeeds)) {
+      throw refuse("speeds", String(speeds.length), `must be 1 to ${REPORT.maxSpeeds} speeds`);
+    }
+    for (const speed of speeds) {
+      if (!(speed * mph <= REPORT.maxSpeed)) {
+        throw refuse("speed_mph", `${num(speed)} mph`, `is above the report's ` +
+          `${num(REPORT.maxSpeed / mph)} mph (150 km/h): lower the speed`);
+      }
+    }
+    const generated = v.road === "iso-class" && v.road_shift_ft === 0;
+    const approach = v.approach_ft * ft;
+    const lines = [
+      "# Report parameters written by a vbi explorer from its current setting:",
+      `#   vbi-report ${name}.yaml --output-dir reports/out`,
+      "# The report runs the study's one-coordinate model, coupled (and decoupled as a",
+      "# bound), with the study's sprung mass; the explorer ran " +
+        (v.modes === 1 ? "the one-coordinate model" : `${v.modes} beam modes`) +
+        (v.coupled ? ", coupled." : ", decoupled."),
+    ];
+    if (generated) {
+      lines.push(`# The report draws its own ISO 8608 class ${v.iso_class} road (seed ${v.seed}) ` +
+        "over the approach and the bridge: the same kind of road as the explorer's, not the same samples.");
+    } else {
+      lines.push(`# The deck the explorer drives (${roadText(v)}) is ${name}-deck.csv beside ` +
+        "this file; the report puts its own flat approach before it.");
+    }
+    if (approach < REPORT.minApproach) {
+      lines.push(`# The explorer's approach of ${num(v.approach_ft)} ft is shorter than the ` +
+        `report's ${num(REPORT.minApproach)} m, so the report's own rule sets the approach.`);
+    }
+    const bridgeText = `${num(v.span_ft)} ft span` + (v.n_spans === 2 ? " x 2" : "");
+    lines.push(
+      `title: "vbi explorer: ${bridgeText}, ${num(speeds[0])} mph"`,
+      "bridge:",
+      `  span: ${num(v.span_ft)} ft`,
+      `  n_spans: ${v.n_spans}`,
+      `  mass_per_length: ${num(v.bridge_weight_kip_per_ft)} kip/ft`,
+      `  first_frequency: ${num(v.bridge_frequency_hz)} Hz`,
+      `  damping_ratio: ${num(v.bridge_damping * 100)} %`,
+      "vehicle:",
+      `  mass: ${num(v.truck_weight_kip)} kip`,
+      `  frequency: ${num(v.truck_frequency_hz)} Hz`,
+      `  damping_ratio: ${num(v.truck_damping * 100)} %`,
+      "profile:",
+    );
+    const files = [];
+    if (generated) lines.push(`  iso_class: ${v.iso_class}`, `  seed: ${v.seed}`, "  spacing: 1 in");
+    else {
+      lines.push(`  file: ${name}-deck.csv`, "  length_unit: m");
+      files.push({ name: `${name}-deck.csv`, text: deckText(v) });
+    }
+    if (approach >= REPORT.minApproach) lines.push(`  approach_length: ${num(v.approach_ft)} ft`);
+    lines.push("speeds: [" + speeds.map((s) => `${num(s)} mph`).join(", ") + "]");
+    const out = [{ name: `${name}.yaml`, text: lines.join("\n") + "\n" }, ...files];
+    const beside = files.length ? ` and ${files[0].name} beside it` : "";
+    out.note = `Report parameters: ${name}.yaml${beside}; run vbi-report ${name}.yaml --output-dir reports/out.`;
+    return out;
+  }
+
+  /** The deck the explorer drives, from the first support [m] (report_file._deck_text). */
+  function deckText(v) {
+    const { road } = scenarioRoad(v);
+    const start = road.x[0] + v.approach_ft * ft;
+    const span = v.span_ft * ft;
+    const length = span * v.n_spans;
+    const tolerance = 1e-9 * Math.max(1.0, length);
+    const stations = [start];
+    for (const x of road.x) if (x > start + tolerance && x < start + length - tolerance) stations.push(x);
+    stations.push(start + length);
+    const lines = ["# deck profile written by a vbi explorer: station from the first support [m], elevation [m]"];
+    for (const x of stations) lines.push(`${coordinate(x - start)},${coordinate(interp(x, road.x, road.elevation))}`);
+    return lines.join("\n") + "\n";
+  }
+
   return {
-    UNITS, RANGES, PORT_MAX_MODES, ISO_CLASS_MEANS, ISO_BAND, ROADS, ROAD_SPACING, MAX_ROAD_SHIFT_FT,
+    UNITS, RANGES, PORT_MAX_MODES, reportParameters, roadText, ISO_CLASS_MEANS, ISO_BAND, ROADS, ROAD_SPACING, MAX_ROAD_SHIFT_FT,
     DEFAULT_OMEGA_DT, scenarioSetting, simulate, spanDafs, makeBridge, beamModes, shapeValues,
     exactInfluence, exactStaticPeak, nodeGrid, downwardPeak, oneCoordinateOmegaMax,
     modalTimeStep, codeAllowances, uniform, seedSequenceState, nextFastLen, inverseDft,

@@ -81,6 +81,15 @@ const results = cases.map((values) => {
 
 // the ports of numpy's random phases and of scipy's FFT length, probed directly
 const probes = JSON.parse(fs.readFileSync(casesFile, "utf8")).probes || {};
+const reportCases = JSON.parse(fs.readFileSync(casesFile, "utf8")).report_cases || [];
+const reports = reportCases.map(([values, speeds, name]) => {
+  try {
+    const files = model.reportParameters(values, speeds, name);
+    return { files: files.map((f) => ({ name: f.name, text: f.text })), note: files.note };
+  } catch (error) {
+    return { error: String(error.message) };
+  }
+});
 const probed = {
   uniform: (probes.uniform || []).map(([seed, count]) => Array.from(model.uniform(seed, 0.0, 2.0 * Math.PI, count))),
   next_fast_len: (probes.next_fast_len || []).map((n) => model.nextFastLen(n)),
@@ -88,7 +97,7 @@ const probed = {
 
 fs.mkdirSync(outDir, { recursive: true });
 fs.writeFileSync(path.join(outDir, "arrays.f64"), Buffer.concat(chunks));
-fs.writeFileSync(path.join(outDir, "results.json"), JSON.stringify({ results, probed, ranges: model.RANGES,
+fs.writeFileSync(path.join(outDir, "results.json"), JSON.stringify({ results, probed, reports, ranges: model.RANGES,
   units: model.UNITS, iso_class_means: model.ISO_CLASS_MEANS, iso_band: model.ISO_BAND,
   max_road_shift_ft: model.MAX_ROAD_SHIFT_FT, road_spacing: model.ROAD_SPACING }, (key, value) =>
   (typeof value === "number" && !Number.isFinite(value) ? String(value) : value)));
