@@ -14,6 +14,10 @@
   styles named by ``bibtex_reference_style`` and ``bibtex_default_style``).
 - Switches sphinx-thebe off: jupyter-book always loads it, the book has no live-code button,
   and its page script names a CDN (and was added twice, a console error on every page).
+- Leaves the saved ipywidgets state off a page that shows no widget view: the explorers'
+  outputs also hold a static twin that computes in the page (``vbi_lib.widgets.page``), which
+  the book shows, and their state (the figures as PNG, some 1 MB on the explorers' chapter)
+  would only weigh the page down and load the widget manager for nothing.
 - Removes the API pages that autosummary generated on the previous build (``book/api/``), so
   that a module added, moved or removed in ``vbi_lib`` never leaves a stale page behind; they
   are generated again from the package on every build.
@@ -217,10 +221,25 @@ register_bibtex_plugin(
 )
 
 
+#: A saved ipywidgets view, as myst-nb writes it into a page.
+WIDGET_VIEW_MIMETYPE = "application/vnd.jupyter.widget-view+json"
+
+
+def _drop_unused_widget_state(app: Sphinx, doctree: nodes.document) -> None:
+    files = getattr(app.env, "nb_metadata", {}).get(app.env.docname, {}).get("js_files")
+    if not files:
+        return
+    if any(WIDGET_VIEW_MIMETYPE in node.astext() for node in doctree.findall(nodes.raw)):
+        return
+    for key in [k for k in files if k.startswith("ipywidgets")]:
+        del files[key]
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("config-inited", _check_assets)
     app.connect("config-inited", _switch_off_thebe)
     app.connect("config-inited", _remove_generated_api_pages, priority=400)
     app.connect("source-read", _fold_parameters_cell)
     app.connect("missing-reference", _resolve_package_alias)
+    app.connect("doctree-read", _drop_unused_widget_state)
     return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}

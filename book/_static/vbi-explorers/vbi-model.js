@@ -928,10 +928,17 @@
       out[3] = M[o + 6] * z0 + M[o + 7] * z1 + M[o + 8] * z2 + M[o + 9] * z3 +
         Bv[slot * 2] * e + Bv[slot * 2 + 1] * r + M[o + 10];
     }
+    // psi and dpsi/dx at a station, into sh[0], sh[1] (zero off the bridge)
+    const sh = new Float64Array(2);
     const shape = (xx, on) => {
-      if (!on) return [0.0, 0.0];
+      if (!on) {
+        sh[0] = 0.0;
+        sh[1] = 0.0;
+        return;
+      }
       const xi = xx - start;
-      return [Math.sin(wave * xi), wave * Math.cos(wave * xi)];
+      sh[0] = Math.sin(wave * xi);
+      sh[1] = wave * Math.cos(wave * xi);
     };
     let y0 = elevation[0];
     let y1 = 0.0;
@@ -949,15 +956,15 @@
       const h = dx / speed;
       const rate = ((elevation[k + 1] - elevation[k]) / dx) * speed;
       const on = grid.spanOfStep[k] > 0;
-      const [pa, da] = shape(xa, on);
-      const [pm, dm] = shape(0.5 * (xa + xb), on);
-      const [pb, db] = shape(xb, on);
-      fill(0, pa, da);
-      fillB(0, pa);
-      fill(11, pm, dm);
-      fillB(1, pm);
-      fill(22, pb, db);
-      fillB(2, pb);
+      shape(xa, on);
+      fill(0, sh[0], sh[1]);
+      fillB(0, sh[0]);
+      shape(0.5 * (xa + xb), on);
+      fill(11, sh[0], sh[1]);
+      fillB(1, sh[0]);
+      shape(xb, on);
+      fill(22, sh[0], sh[1]);
+      fillB(2, sh[0]);
       const ea = elevation[k];
       const em = 0.5 * (elevation[k] + elevation[k + 1]);
       const eb = elevation[k + 1];
@@ -983,9 +990,9 @@
     // the last node starts no step: its force uses the last step's matrices and slope
     const k = n - 1;
     const on = grid.spanOfStep[k - 1] > 0;
-    const [pb, db] = shape(x[k], on);
-    fill(22, pb, db);
-    fillB(2, pb);
+    shape(x[k], on);
+    fill(22, sh[0], sh[1]);
+    fillB(2, sh[0]);
     const slope = (elevation[k] - elevation[k - 1]) / (x[k] - x[k - 1]);
     derivative(2, y0, y1, y2, y3, elevation[k], slope * speed);
     contact[k] = weight + mv * out[1];
@@ -1350,7 +1357,6 @@
       speed,
       bridge_start: start,
       position: grid.x,
-      time: grid.x.map((p) => (p - grid.x[0]) / speed),
       elevation: grid.elevation,
       span_of_step: grid.spanOfStep,
       dt: grid.dtMax,
