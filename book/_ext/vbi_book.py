@@ -225,11 +225,12 @@ register_bibtex_plugin(
 WIDGET_VIEW_MIMETYPE = "application/vnd.jupyter.widget-view+json"
 
 
-def _drop_unused_widget_state(app: Sphinx, doctree: nodes.document) -> None:
-    files = getattr(app.env, "nb_metadata", {}).get(app.env.docname, {}).get("js_files")
-    if not files:
-        return
-    if any(WIDGET_VIEW_MIMETYPE in node.astext() for node in doctree.findall(nodes.raw)):
+def _drop_unused_widget_state(
+    app: Sphinx, pagename: str, templatename: str, context: dict[str, Any], doctree: Any
+) -> None:
+    # before myst-nb's own handler (priority 500) adds the page's scripts from the environment
+    files = getattr(app.env, "nb_metadata", {}).get(pagename, {}).get("js_files")
+    if not files or WIDGET_VIEW_MIMETYPE in context.get("body", ""):
         return
     for key in [k for k in files if k.startswith("ipywidgets")]:
         del files[key]
@@ -241,5 +242,5 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("config-inited", _remove_generated_api_pages, priority=400)
     app.connect("source-read", _fold_parameters_cell)
     app.connect("missing-reference", _resolve_package_alias)
-    app.connect("doctree-read", _drop_unused_widget_state)
+    app.connect("html-page-context", _drop_unused_widget_state, priority=400)
     return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}

@@ -148,6 +148,8 @@
       const legend = el("legend", { text: spec.label, title: spec.help });
       this.element = el("fieldset", { class: "vbi-control vbi-choice", "data-control": spec.name,
         title: spec.help }, legend);
+      const options = el("span", { class: "vbi-options" });
+      this.element.append(options);
       spec.options.forEach(([value, label], i) => {
         const input = el("input", { type: "radio", name: spec.name, value: String(value),
           checked: value === spec.value, "data-index": i });
@@ -157,7 +159,7 @@
           explorer.changed(this);
         });
         this.inputs.push(input);
-        this.element.append(el("label", { class: "vbi-option" }, input, " " + label));
+        options.append(el("label", { class: "vbi-option" }, input, " " + label));
       });
       this.element.append(el("span", { class: "vbi-help", text: spec.help }));
     }
