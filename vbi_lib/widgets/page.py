@@ -166,8 +166,9 @@ def page_spec(kind: str, values: dict[str, Any], precomputed: dict | None = None
     kind
         ``"crossing"``, ``"speed"`` or ``"frequency"``.
     values
-        Start values by parameter (a live explorer's ``values()``); fields of :class:`~vbi_lib.widgets.Scenario` missing take its defaults,
-        the sweeps' theirs; ``speed_mph`` and ``ratio`` are the sweeps' selected crossing.
+        Start values by parameter (a live explorer's ``values()``); fields of
+        :class:`~vbi_lib.widgets.Scenario` missing take its defaults, the sweeps' theirs;
+        ``speed_mph`` and ``ratio`` are the sweeps' selected crossing.
     precomputed
         Data the library computed at build time (the frequency map).
 
