@@ -17,8 +17,8 @@ The sweeps are timed in this process: a 36-speed sweep and a 13 x 15 frequency m
 The static book's explorers (issue 25: within a frame, 16 ms, for the default crossing) are
 timed in Chromium on the built book (``_build/html``, ``make book``; ``VBI_BOOK_HTML`` names
 another build): from the key press on ``input[name=speed]`` to the end of the redraw (the
-explorer's ``vbi-drawn`` event: the port's crossing, uPlot's two plots and the readout), and
-the work alone (the recomputation scheduled for the next frame to the end of the redraw);
+explorer's ``vbi-drawn`` event: the port's crossing, uPlot's two plots and the readout; the
+recomputation waits for the next frame), and the work alone (the crossing and the redraw);
 and the port's crossing alone in Node.
 Prints medians after a warm-up (compiled code loads on first use).
 """
@@ -199,7 +199,7 @@ STATIC_TIMER = """
     const press = window.vbiPress;
     if (press.pressed === null) return;
     press.total.push(event.detail.drawn - press.pressed);
-    press.work.push(event.detail.drawn - event.detail.started);
+    press.work.push(event.detail.compute + (event.detail.drawn - event.detail.computed));
     press.pressed = null;
   });
 }

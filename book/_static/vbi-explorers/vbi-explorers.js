@@ -567,9 +567,16 @@
       this.notice.textContent = message ? `⚠ ${message}` : "";
     }
 
+    /** Recompute at once, unless a recomputation ran less than a frame ago (a slider
+     * dragged fast): then once, at the next frame, with the latest values. */
     schedule() {
       if (this.frame) return;
-      this.changedAt = performance.now();
+      const now = performance.now();
+      this.changedAt = now;
+      if (!(this.lastUpdate > now - 16)) {
+        this.update();
+        return;
+      }
       this.frame = requestAnimationFrame(() => {
         this.frame = null;
         this.update();
@@ -600,6 +607,7 @@
       const computed = performance.now();
       this.draw(result);
       const drawn = performance.now();
+      this.lastUpdate = drawn;
       this.root.dispatchEvent(new CustomEvent("vbi-drawn", {
         detail: { started, computed, drawn, ms: drawn - started, compute: result.ms },
       }));
