@@ -249,7 +249,7 @@
     /** A vertical line at the readout's crossing (the sweeps). */
     marks(u) {
       const at = this.extra.mark;
-      if (at === undefined || at === null) return;
+      if (at === undefined || at === null || !(at >= u.scales.x.min && at <= u.scales.x.max)) return;
       const x = u.valToPos(at, "x", true);
       const ctx = u.ctx;
       ctx.save();
