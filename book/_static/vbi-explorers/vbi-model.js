@@ -1192,6 +1192,17 @@
       for (let i = 0; i < N; i++) s += (phiMid[j][i] * phi[i]) / modes.omega[i] ** 2;
       return s;
     };
+    // the modes under the wheel at every node on the bridge, once for all spans
+    const under = new Float64Array(n * N);
+    const onBridge = new Uint8Array(n);
+    for (let k = 0; k < n; k++) {
+      const xi = x[k] - start;
+      if (xi >= 0.0 && xi <= bridge.length && run.contact[k] !== 0.0) {
+        onBridge[k] = 1;
+        shapeValues(modes, xi, phi, dphi);
+        for (let i = 0; i < N; i++) under[k * N + i] = phi[i] / modes.omega[i] ** 2;
+      }
+    }
     for (let j = 0; j < nSpans; j++) {
       const series = new Float64Array(n);
       const seriesRate = new Float64Array(n);
@@ -1205,9 +1216,10 @@
         }
         series[k] = s0;
         seriesRate[k] = s1;
-        const xi = x[k] - start;
-        if (xi >= 0.0 && xi <= bridge.length) {
-          correction[k] = run.contact[k] * (seriesInfluence(j, xi) - exactInfluence(bridge, j, xi));
+        if (onBridge[k]) {
+          let line = 0.0;
+          for (let i = 0; i < N; i++) line += phiMid[j][i] * under[k * N + i];
+          correction[k] = run.contact[k] * (line - exactInfluence(bridge, j, x[k] - start));
         }
       }
       const u = series.map((s, k) => s + correction[k]);
