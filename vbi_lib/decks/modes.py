@@ -1,0 +1,313 @@
+r"""A deck's modes and its static flexibility, from the Rayleigh-Ritz method.
+
+The modes solve :math:`K c_n = \omega_n^2 M c_n` (:mod:`vbi_lib.decks.ritz`), normalised
+:math:`c_m^T M c_n = \delta_{mn}`, so that the deck's deflection (positive up) is
+
+.. math:: w(x, y, t) = \sum_n \phi_n(x, y)\, q_n(t), \qquad
+    \int \mu\, \phi_m \phi_n \, dA + \sum_{lines}\int m\,\phi_m\phi_n\,dx = \delta_{mn},
+
+with :math:`\phi_n = \sum_i c_{in}\Phi_i` [kg^-1/2], exactly as the beam's modes of
+:mod:`vbi_lib.modes`.  By the Rayleigh-Ritz method each frequency is an upper bound of the
+deck's, and falls as functions are added (``tests/decks/test_convergence.py``).
+
+Static flexibility
+------------------
+The deflection (positive down) at a point :math:`r` under a unit downward load at :math:`a`
+is, in the full basis, :math:`G(r, a) = \Phi(r)^T K^{-1} \Phi(a)`: the deck's own static
+answer within its Ritz functions, every function included (Maxwell: :math:`G(r,a) = G(a,r)`).
+With :math:`N` modes it is :math:`\sum_{n \le N} \phi_n(r)\phi_n(a)/\omega_n^2`; the
+difference, the **residual flexibility**, is what the mode-acceleration method adds to an
+:math:`N`-mode response (:mod:`vbi_lib.decks.paths`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import scipy.linalg
+
+from .. import _validation as check
+from ..ranges import RANGES
+from .basis import RitzBasis, ritz_basis
+from .deck import Deck
+from .ritz import stiffness_and_mass
+
+if TYPE_CHECKING:
+    from .paths import PathTables, WheelPath
+
+__all__ = ["DEFAULT_MODE_RANGE", "DeckModes", "deck_modes"]
+
+#: ``deck.modes()`` without a count keeps every mode below this multiple of the first.
+DEFAULT_MODE_RANGE = 4.0
+
+
+@dataclass(frozen=True, eq=False)
+class DeckModes:
+    """The first N mass-normalised modes of a :class:`~vbi_lib.decks.deck.Deck`.
+
+    Positions are ``(x, y)``: ``x`` along the girders from the first support line (along
+    the line ``y = const``, so skew or not, a girder's midspan is ``x = L/2``) and ``y``
+    across from the edge ``y = 0`` [m] (:mod:`vbi_lib.decks.deck`).  Off the deck along
+    ``x`` (a wheel on the approach) every shape is 0.
+
+    Attributes
+    ----------
+    deck
+        The deck.
+    basis
+        Its Ritz functions (:class:`~vbi_lib.decks.basis.RitzBasis`).
+    omega
+        Circular frequencies [rad/s], increasing, shape ``(N,)``.
+    vectors
+        Ritz coefficients of each mode, shape ``(M Q, N)``.
+
+    Examples
+    --------
+    >>> from vbi_lib.decks import Deck
+    >>> modes = Deck.plate(10.0, 10.0, 0.2, 30e9, 0.3, 2400.0).modes(3)
+    >>> (modes.frequencies_hz / modes.frequencies_hz[0]).round(3)
+    array([1.   , 1.675, 3.813])
+    """
+
+    deck: Deck
+    basis: RitzBasis = field(repr=False)
+    omega: np.ndarray
+    vectors: np.ndarray = field(repr=False)
+    _factor: Any = field(repr=False)
+
+    @property
+    def count(self) -> int:
+        """Number of modes N."""
+        return int(self.omega.size)
+
+    @property
+    def frequencies_hz(self) -> np.ndarray:
+        """Natural frequencies [Hz], shape ``(N,)``."""
+        return self.omega / (2.0 * math.pi)
+
+    @property
+    def damping_ratios(self) -> np.ndarray:
+        """Damping ratio of each mode (the deck's, the same for all), shape ``(N,)``."""
+        return np.full(self.count, self.deck.damping_ratio)
+
+    # ------------------------------------------------------------------ shapes
+    def derivative(self, x: object, y: object, along: int = 0, across: int = 0) -> np.ndarray:
+        """``d^along/dx^along d^across/dy^across phi_n`` at points, shape ``(n_points, N)``.
+
+        ``d/dx`` is along the girders at fixed ``y`` (the direction of travel), ``d/dy``
+        across them at fixed Cartesian ``x`` (square to the girders).  Units
+        [kg^-1/2 m^-(along + across)].  ``along + across`` at most 2 (3 along alone).
+
+        Raises
+        ------
+        ValueError
+            Orders out of that range, a point not finite or off the deck across (``y``
+            outside 0 to the width).
+        """
+        along = check.integer("along", along, low=0, high=3)
+        across = check.integer("across", across, low=0, high=2)
+        if along + across > 3 or (across and along + across > 2):
+            raise ValueError(
+                f"along={along} and across={across}: give at most second derivatives "
+                "(third along alone)"
+            )
+        xs, ys = self._coordinates(x, y)
+        return self.basis.values(xs, ys, along, across) @ self.vectors
+
+    def shape(self, x: object, y: object) -> np.ndarray:
+        """``phi_n(x, y)`` [kg^-1/2], shape ``(n_points, N)``."""
+        return self.derivative(x, y)
+
+    def slope(self, x: object, y: object) -> np.ndarray:
+        """``d phi_n / dx`` along the girders [kg^-1/2 / m], shape ``(n_points, N)``."""
+        return self.derivative(x, y, along=1)
+
+    def curvature(self, x: object, y: object) -> np.ndarray:
+        """``d^2 phi_n / dx^2`` along the girders [kg^-1/2 / m^2], shape ``(n_points, N)``."""
+        return self.derivative(x, y, along=2)
+
+    def _coordinates(self, x: object, y: object) -> tuple[np.ndarray, np.ndarray]:
+        xs = np.atleast_1d(check.real_array("x", x))
+        ys = np.atleast_1d(check.real_array("y", y))
+        try:
+            xs, ys = np.broadcast_arrays(xs, ys)
+        except ValueError:
+            raise ValueError(
+                f"x (shape {xs.shape}) and y (shape {ys.shape}) must have the same shape or "
+                "broadcast together"
+            ) from None
+        xs, ys = xs.ravel(), ys.ravel()
+        if not (np.isfinite(xs).all() and np.isfinite(ys).all()):
+            raise ValueError("x and y must be finite positions [m]")
+        width = self.deck.width
+        if (ys < -1e-9 * width).any() or (ys > width * (1 + 1e-9)).any():
+            raise ValueError(
+                f"y must lie on the deck, from 0 to its width {width:g} m; got {ys.min():g} "
+                f"to {ys.max():g} m"
+            )
+        return xs, np.clip(ys, 0.0, width)
+
+    # ------------------------------------------------------------------ statics
+    def _basis_at(self, points: object, name: str) -> np.ndarray:
+        array = check.real_array(name, points)
+        if array.ndim == 1 and array.size == 2:
+            array = array[None, :]
+        if array.ndim != 2 or array.shape[1] != 2:
+            raise ValueError(f"{name} must be (x, y) points, shape (n, 2); got {array.shape}")
+        xs, ys = self._coordinates(array[:, 0], array[:, 1])
+        return self.basis.values(xs, ys)
+
+    def static_flexibility(self, loads: object, responses: object) -> np.ndarray:
+        """Full-basis static deflection at each response under a unit load at each load [m/N].
+
+        ``G[r, a] = Phi(r)^T K^-1 Phi(a)``, downward positive under a downward load: the
+        deck's own exact static answer within its Ritz functions.  ``loads`` and
+        ``responses`` are ``(x, y)`` points, shape ``(n, 2)``; a load off the deck along
+        ``x`` gives 0.  Returns shape ``(n_responses, n_loads)``.
+        """
+        at_loads = self._basis_at(loads, "loads")
+        at_responses = self._basis_at(responses, "responses")
+        if at_responses.shape[0] <= at_loads.shape[0]:
+            solved = scipy.linalg.cho_solve(self._factor, at_responses.T)
+            return (at_loads @ solved).T
+        solved = scipy.linalg.cho_solve(self._factor, at_loads.T)
+        return at_responses @ solved
+
+    def modal_flexibility(self, loads: object, responses: object) -> np.ndarray:
+        """``sum_n phi_n(r) phi_n(a) / omega_n^2`` over these N modes [m/N], ``(n_r, n_a)``."""
+        at_loads = self._basis_at(loads, "loads") @ self.vectors
+        at_responses = self._basis_at(responses, "responses") @ self.vectors
+        return (at_responses / self.omega**2) @ at_loads.T
+
+    def residual_flexibility(self, loads: object, responses: object) -> np.ndarray:
+        """Full-basis minus N-mode static flexibility [m/N], ``(n_responses, n_loads)``."""
+        return self.static_flexibility(loads, responses) - self.modal_flexibility(loads, responses)
+
+    def static_fraction(self, loads: object, responses: object) -> np.ndarray:
+        """Share of the full static flexibility carried by each mode, ``(n_r, n_a, N)``."""
+        at_loads = self._basis_at(loads, "loads") @ self.vectors
+        at_responses = self._basis_at(responses, "responses") @ self.vectors
+        full = self.static_flexibility(loads, responses)
+        each = at_responses[:, None, :] * at_loads[None, :, :] / self.omega**2
+        return each / full[:, :, None]
+
+    # ------------------------------------------------------------------ paths
+    def path_tables(
+        self, path: WheelPath, responses: object, spacing: float | None = None
+    ) -> PathTables:
+        """What a modal crossing needs along ``path`` (:func:`vbi_lib.decks.paths.path_tables`)."""
+        from .paths import path_tables
+
+        return path_tables(self, path, responses, spacing)
+
+    # ------------------------------------------------------------------ output
+    def plot(self, modes: int = 4, *, axes: object = None, resolution: int = 41) -> object:
+        """Contours of the first ``modes`` mode shapes on the deck's plan; returns the axes.
+
+        ``axes``: a sequence of ``modes`` matplotlib axes (a new figure if ``None``).
+        Lengths in the display units (:mod:`vbi_lib.display`); girders dashed, supports
+        solid.
+        """
+        import matplotlib.pyplot as plt
+
+        from .. import display
+
+        count = check.integer("modes", modes, low=1, high=self.count)
+        if axes is None:
+            _, axes = plt.subplots(1, count, figsize=(3.2 * count, 3.0), squeeze=False)
+            axes = axes[0]
+        axes = list(np.atleast_1d(axes))
+        if len(axes) < count:
+            raise ValueError(f"axes holds {len(axes)} axes; modes={count} needs as many")
+        deck = self.deck
+        xi = np.linspace(0.0, deck.length, resolution)
+        eta = np.linspace(0.0, deck.width, resolution)
+        grid_x, grid_y = np.meshgrid(xi, eta)
+        values = self.shape(grid_x.ravel(), grid_y.ravel())
+        t = deck.tangent
+        plan_x = display.value(grid_x + t * grid_y, "length")
+        plan_y = display.value(grid_y, "length")
+        for n, ax in enumerate(axes[:count]):
+            shape = values[:, n].reshape(grid_x.shape)
+            level = np.abs(shape).max() or 1.0
+            ax.contourf(plan_x, plan_y, shape / level, levels=np.linspace(-1, 1, 21), cmap="RdBu_r")
+            for y in deck.girder_positions:
+                xs = display.value(np.array([t * y, deck.length + t * y]), "length")
+                ax.plot(xs, display.value(np.array([y, y]), "length"), "k--", lw=0.6)
+            for s in deck.supports:
+                xs = display.value(np.array([s, s + t * deck.width]), "length")
+                ax.plot(xs, display.value(np.array([0.0, deck.width]), "length"), "k-", lw=1.2)
+            ax.set_title(f"mode {n + 1}: {self.frequencies_hz[n]:.2f} Hz")
+            ax.set_xlabel(display.label("x", "length"))
+            ax.set_aspect("equal")
+        axes[0].set_ylabel(display.label("y", "length"))
+        return axes[:count]
+
+    def __repr__(self) -> str:
+        shown = ", ".join(f"{f:.2f}" for f in self.frequencies_hz[:6])
+        more = ", ..." if self.count > 6 else ""
+        along, across = self.basis.along, self.basis.across
+        return (
+            f"DeckModes({self.count} modes of {self.deck!r}: {shown}{more} Hz; Ritz "
+            f"{along} x {across} functions)"
+        )
+
+
+@lru_cache(maxsize=16)
+def _solve(deck: Deck) -> tuple[RitzBasis, np.ndarray, np.ndarray, Any]:
+    """Every mode the deck's basis holds (up to the ``modes`` limit), and K's Cholesky factor."""
+    along, across = deck.functions
+    ends = deck.end_functions
+    basis = ritz_basis(deck.spans, deck.width, deck.tangent, along, across, deck.sides, ends)
+    stiffness, mass = stiffness_and_mass(deck, basis)
+    keep = min(basis.size, int(RANGES["modes"].hard[1]))
+    eigenvalues, vectors = scipy.linalg.eigh(stiffness, mass, subset_by_index=[0, keep - 1])
+    if eigenvalues[0] <= 0.0:
+        raise ValueError(
+            f"{deck!r} has a mode of no stiffness (omega^2 = {eigenvalues[0]:.3g}); give it "
+            "supports that hold it"
+        )
+    # sign: the largest value of each mode over a grid of the deck is positive
+    grid = np.linspace(0.0, 1.0, 7)
+    gx, gy = np.meshgrid(grid * deck.length, grid * deck.width)
+    sample = basis.values(gx.ravel(), gy.ravel()) @ vectors
+    pick = np.abs(sample).argmax(axis=0)
+    vectors = vectors * np.sign(sample[pick, np.arange(vectors.shape[1])])
+    factor = scipy.linalg.cho_factor(stiffness)
+    omega = np.sqrt(eigenvalues)
+    for array in (omega, vectors):
+        array.setflags(write=False)
+    return basis, omega, vectors, factor
+
+
+def deck_modes(deck: Deck, n: int | None = None) -> DeckModes:
+    """The deck's first ``n`` modes by the Rayleigh-Ritz method (module docstring).
+
+    Parameters
+    ----------
+    deck
+        The deck.
+    n
+        Number of modes, 1 to 200 and at most the number of Ritz functions; ``None``: every
+        mode below :data:`DEFAULT_MODE_RANGE` (4) times the first frequency.
+
+    Returns
+    -------
+    DeckModes
+
+    Raises
+    ------
+    TypeError, ValueError
+        ``deck`` is not a :class:`~vbi_lib.decks.deck.Deck`; ``n`` not a whole number in range.
+    """
+    check.instance("deck", deck, Deck, "a vbi.Deck")
+    basis, omega, vectors, factor = _solve(deck)
+    if n is None:
+        count = max(1, int(np.count_nonzero(omega < DEFAULT_MODE_RANGE * omega[0])))
+    else:
+        count = check.integer("n", n, low=1, high=omega.size)
+    return DeckModes(deck, basis, omega[:count], vectors[:, :count], factor)
