@@ -41,6 +41,7 @@ import pandas as pd
 
 from . import units as u
 from .bridges import Bridge, reference_beam
+from .decks.study import StudyDeck, study_site
 from .profile_files import read_profile
 from .profiles import Profile
 from .vehicles import Vehicle
@@ -512,7 +513,9 @@ def assessment_inputs(
     profiles: dict[str, Profile],
     beam: str = "study",
     damping_ratio: float = 0.01,
-) -> tuple[list[Bridge], list[Vehicle], list[Profile]]:
+    *,
+    skew_hand: str | None = None,
+) -> tuple[list[Bridge] | list[StudyDeck], list[Vehicle], list[Profile]]:
     """Bridges, trucks and roads of a model-assessment table like the study's Chapter 13.
 
     Every parameter comes from the row: the span, number of spans, midspan stiffness of the
@@ -531,9 +534,19 @@ def assessment_inputs(
     beam
         ``"study"``: :meth:`Bridge.from_midspan_stiffness`, the one-coordinate model's rule
         (82)-(84); ``"exact"``: :func:`vbi_lib.bridges.reference_beam`, the beam whose exact
-        midspan stiffness is ``K_mid`` (the consistent choice for the many-mode model).
+        midspan stiffness is ``K_mid`` (the consistent choice for the many-mode model);
+        ``"deck"``: the row's deck across its width, drawn from the study's geometry and
+        fitted to ``K_mid`` and ``f1`` by two scalars (:func:`vbi_lib.decks.study.study_site`),
+        with the row's wheel path (Tables 2.13.5-2.13.7) and girder: a
+        :class:`vbi_lib.decks.study.StudyDeck` per row.  The seed gives no geometry for the
+        140 ft decks: those rows keep the exact beam (``StudyDeck.beam``), and their
+        ``notes`` say so.
     damping_ratio
         Bridge damping ratio (the study: 1 %).
+    skew_hand
+        With ``beam="deck"``: ``None`` draws the 40 ft decks square (the default: the seed
+        does not say which way its 16 degree skew runs), ``"left"`` or ``"right"`` skews them
+        with that hand (:mod:`vbi_lib.decks.deck`).
 
     Returns
     -------
@@ -543,9 +556,9 @@ def assessment_inputs(
     Raises
     ------
     ValueError
-        ``beam`` not ``"study"`` or ``"exact"``, a row naming a profile not given, or a row
-        whose numbers the :class:`Bridge` or :class:`Vehicle` refuses (the message names the
-        row).
+        ``beam`` not ``"study"``, ``"exact"`` or ``"deck"``, a row naming a profile not given,
+        or a row whose numbers the :class:`Bridge`, the deck or :class:`Vehicle` refuses (the
+        message names the row).
 
     Examples
     --------
@@ -558,23 +571,40 @@ def assessment_inputs(
     >>> round(b[0].first_frequency_hz, 2), round(v[0].frequency_hz, 2)
     (9.98, 10.55)
     """
-    if beam not in ("study", "exact"):
-        raise ValueError(f"beam={beam!r} must be 'study' or 'exact'")
-    make = Bridge.from_midspan_stiffness if beam == "study" else reference_beam
+    if beam not in ("study", "exact", "deck"):
+        raise ValueError(f"beam={beam!r} must be 'study', 'exact' or 'deck'")
+    if skew_hand is not None and beam != "deck":
+        raise ValueError(f"skew_hand={skew_hand!r} applies to beam='deck' only")
+    make = {"study": Bridge.from_midspan_stiffness, "exact": reference_beam}.get(beam)
+    if beam == "deck" and "path" not in getattr(table, "columns", ()):
+        raise ValueError("beam='deck' needs the table's 'path' column (the study's path number)")
     bridges, vehicles, roads = [], [], []
     for i, row in enumerate(table.itertuples()):
         if row.profile not in profiles:
             raise ValueError(f"row {i}: profile {row.profile!r} is not among the roads given")
         try:
-            bridges.append(
-                make(
-                    row.span_ft * u.ft,
-                    int(row.n_spans),
-                    row.k_mid_lbf_per_in * u.lbf / u.inch,
-                    row.bridge_f1_hz,
-                    damping_ratio,
+            if beam == "deck":
+                bridges.append(
+                    study_site(
+                        row.span_ft,
+                        int(row.n_spans),
+                        int(row.path),
+                        row.k_mid_lbf_per_in * u.lbf / u.inch,
+                        row.bridge_f1_hz,
+                        skew_hand=skew_hand,
+                        damping_ratio=damping_ratio,
+                    )
                 )
-            )
+            else:
+                bridges.append(
+                    make(
+                        row.span_ft * u.ft,
+                        int(row.n_spans),
+                        row.k_mid_lbf_per_in * u.lbf / u.inch,
+                        row.bridge_f1_hz,
+                        damping_ratio,
+                    )
+                )
             vehicles.append(
                 Vehicle(
                     row.vehicle_mass_slinch * u.slinch,
