@@ -526,7 +526,7 @@ RANGES: dict[str, Range] = {
         (1, 100),
         None,
         "more than 100 functions a direction only cost time: the defaults converge with 12 "
-        "per span along and 18 across",
+        "per span along and 30 across",
         "",
         "Deck (resolution)",
     ),

@@ -591,7 +591,7 @@ def assessment_inputs(
                         int(row.path),
                         row.k_mid_lbf_per_in * u.lbf / u.inch,
                         row.bridge_f1_hz,
-                        skew_hand=skew_hand,
+                        skew_hand=skew_hand if row.span_ft == 40 else None,
                         damping_ratio=damping_ratio,
                     )
                 )
