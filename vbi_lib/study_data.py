@@ -41,7 +41,7 @@ import pandas as pd
 
 from . import units as u
 from .bridges import Bridge, reference_beam
-from .decks.study import StudyDeck, study_site
+from .decks.study import StudyDeck, assessment_site
 from .profile_files import read_profile
 from .profiles import Profile
 from .vehicles import Vehicle
@@ -535,18 +535,14 @@ def assessment_inputs(
         ``"study"``: :meth:`Bridge.from_midspan_stiffness`, the one-coordinate model's rule
         (82)-(84); ``"exact"``: :func:`vbi_lib.bridges.reference_beam`, the beam whose exact
         midspan stiffness is ``K_mid`` (the consistent choice for the many-mode model);
-        ``"deck"``: the row's deck across its width, drawn from the study's geometry and
-        fitted to ``K_mid`` and ``f1`` by two scalars (:func:`vbi_lib.decks.study.study_site`),
-        with the row's wheel path (Tables 2.13.5-2.13.7) and girder: a
-        :class:`vbi_lib.decks.study.StudyDeck` per row.  The seed gives no geometry for the
-        140 ft decks: those rows keep the exact beam (``StudyDeck.beam``), and their
-        ``notes`` say so.
+        ``"deck"``: a :class:`vbi_lib.decks.study.StudyDeck` per row, the deck across its
+        width with the row's path and girder (:func:`vbi_lib.decks.study.assessment_site`;
+        the 140 ft rows keep the exact beam, and their notes say why).
     damping_ratio
         Bridge damping ratio (the study: 1 %).
     skew_hand
-        With ``beam="deck"``: ``None`` draws the 40 ft decks square (the default: the seed
-        does not say which way its 16 degree skew runs), ``"left"`` or ``"right"`` skews them
-        with that hand (:mod:`vbi_lib.decks.deck`).
+        ``beam="deck"`` only: ``None`` (the 40 ft decks square; the seed leaves the hand of
+        their 16 degree skew open), ``"left"`` or ``"right"``.
 
     Returns
     -------
@@ -577,34 +573,17 @@ def assessment_inputs(
         raise ValueError(f"skew_hand={skew_hand!r} applies to beam='deck' only")
     make = {"study": Bridge.from_midspan_stiffness, "exact": reference_beam}.get(beam)
     if beam == "deck" and "path" not in getattr(table, "columns", ()):
-        raise ValueError("beam='deck' needs the table's 'path' column (the study's path number)")
+        raise ValueError("beam='deck' needs the table's 'path' column (the study's path)")
     bridges, vehicles, roads = [], [], []
     for i, row in enumerate(table.itertuples()):
         if row.profile not in profiles:
             raise ValueError(f"row {i}: profile {row.profile!r} is not among the roads given")
         try:
             if beam == "deck":
-                bridges.append(
-                    study_site(
-                        row.span_ft,
-                        int(row.n_spans),
-                        int(row.path),
-                        row.k_mid_lbf_per_in * u.lbf / u.inch,
-                        row.bridge_f1_hz,
-                        skew_hand=skew_hand if row.span_ft == 40 else None,
-                        damping_ratio=damping_ratio,
-                    )
-                )
+                bridges.append(assessment_site(row, skew_hand, damping_ratio))
             else:
-                bridges.append(
-                    make(
-                        row.span_ft * u.ft,
-                        int(row.n_spans),
-                        row.k_mid_lbf_per_in * u.lbf / u.inch,
-                        row.bridge_f1_hz,
-                        damping_ratio,
-                    )
-                )
+                span, k_mid = row.span_ft * u.ft, row.k_mid_lbf_per_in * u.lbf / u.inch
+                bridges.append(make(span, int(row.n_spans), k_mid, row.bridge_f1_hz, damping_ratio))
             vehicles.append(
                 Vehicle(
                     row.vehicle_mass_slinch * u.slinch,

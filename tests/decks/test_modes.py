@@ -17,7 +17,7 @@ import pytest
 
 from vbi_lib import units as u
 from vbi_lib.decks import WheelPath
-from vbi_lib.decks.paths import axle_shape
+from vbi_lib.decks.modes import axle_shape
 from vbi_lib.decks.study import study_deck
 
 matplotlib.use("Agg")

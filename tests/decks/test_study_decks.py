@@ -80,7 +80,7 @@ def test_every_row_s_deck_has_its_path_girder_k_mid_and_f1(assessment) -> None: 
         seen.add(key)
         k = midspan_stiffness(deck, site.path, girder)
         assert k == pytest.approx(row.k_mid_lbf_per_in * u.lbf / u.inch, rel=1e-9)
-        assert deck.first_frequency_hz() == pytest.approx(row.bridge_f1_hz, rel=1e-6)
+        assert deck.first_frequency_hz() == pytest.approx(row.bridge_f1_hz, rel=1e-12)
         assert len(site.responses) == row.n_spans
         if row.span_ft == 40:
             assert "does not say which way" in site.notes[0]
@@ -102,5 +102,5 @@ def test_the_skew_hand_changes_the_40_ft_decks_only(assessment, shared_data) -> 
     j = int(np.flatnonzero((table.span_ft == 40).to_numpy())[0])
     f_skew = left[i].deck.frequencies_hz(3)
     f_square = square[j].deck.frequencies_hz(3)
-    assert f_skew[0] == pytest.approx(f_square[0], rel=1e-6)
+    assert f_skew[0] == pytest.approx(f_square[0], rel=1e-12)
     assert abs(f_skew[1] / f_skew[0] - f_square[1] / f_square[0]) > 1e-4

@@ -8,14 +8,17 @@ deck (:mod:`~vbi_lib.decks.modes`), the tables a modal crossing needs along a wh
 (:mod:`~vbi_lib.decks.statics`) and the study's own decks (:mod:`~vbi_lib.decks.study`).
 """
 
-from .deck import Deck, Diaphragms, EdgeBeam, Girders
-from .modes import DeckModes, deck_modes
-from .paths import PathTables, WheelPath, path_tables
+from .deck import Deck
+from .layout import DeckLayout
+from .members import Diaphragms, EdgeBeam, Girders
+from .modes import DeckModes, deck_modes, path_tables
+from .paths import PathTables, WheelPath
 from .sections import GirderSection, Part, composite_rigidity
 from .statics import axle_deflection, fit_to_path, midspan_stiffness
 
 __all__ = [
     "Deck",
+    "DeckLayout",
     "DeckModes",
     "Diaphragms",
     "EdgeBeam",

@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 import scipy.linalg
@@ -33,13 +33,11 @@ import scipy.linalg
 from .. import _validation as check
 from ..ranges import RANGES
 from .basis import RitzBasis, ritz_basis
-from .deck import Deck
+from .layout import DeckLayout
+from .paths import PathTables, WheelPath
 from .ritz import stiffness_and_mass
 
-if TYPE_CHECKING:
-    from .paths import PathTables, WheelPath
-
-__all__ = ["DEFAULT_MODE_RANGE", "DeckModes", "deck_modes"]
+__all__ = ["DEFAULT_MODE_RANGE", "DeckModes", "axle_shape", "deck_modes", "path_tables"]
 
 #: ``deck.modes()`` without a count keeps every mode below this multiple of the first.
 DEFAULT_MODE_RANGE = 4.0
@@ -73,7 +71,7 @@ class DeckModes:
     array([1.   , 1.675, 3.813])
     """
 
-    deck: Deck
+    deck: DeckLayout
     basis: RitzBasis = field(repr=False)
     omega: np.ndarray
     vectors: np.ndarray = field(repr=False)
@@ -200,8 +198,6 @@ class DeckModes:
         self, path: WheelPath, responses: object, spacing: float | None = None
     ) -> PathTables:
         """What a modal crossing needs along ``path`` (:func:`vbi_lib.decks.paths.path_tables`)."""
-        from .paths import path_tables
-
         return path_tables(self, path, responses, spacing)
 
     # ------------------------------------------------------------------ output
@@ -258,8 +254,21 @@ class DeckModes:
 
 
 @lru_cache(maxsize=16)
-def _solve(deck: Deck) -> tuple[RitzBasis, np.ndarray, np.ndarray, Any]:
-    """Every mode the deck's basis holds (up to the ``modes`` limit), and K's Cholesky factor."""
+def _solve(deck: DeckLayout) -> tuple[RitzBasis, np.ndarray, np.ndarray, Any]:
+    """Every mode the deck's basis holds (up to the ``modes`` limit), and K's Cholesky factor.
+
+    A deck scaled from another (:meth:`DeckLayout.scaled`: rigidities times ``s``, masses
+    times ``m``) has the other's modes exactly: ``omega sqrt(s / m)``, vectors over
+    ``sqrt(m)``, ``K``'s factor times ``sqrt(s)``.
+    """
+    origin = getattr(deck, "_scaled_from", None)
+    if origin is not None:
+        base, s, m = origin
+        basis, omega, vectors, (factor, lower) = _solve(base)
+        omega, vectors = omega * math.sqrt(s / m), vectors / math.sqrt(m)
+        for array in (omega, vectors):
+            array.setflags(write=False)
+        return basis, omega, vectors, (factor * math.sqrt(s), lower)
     along, across = deck.functions
     ends = deck.end_functions
     basis = ritz_basis(deck.spans, deck.width, deck.tangent, along, across, deck.sides, ends)
@@ -284,7 +293,7 @@ def _solve(deck: Deck) -> tuple[RitzBasis, np.ndarray, np.ndarray, Any]:
     return basis, omega, vectors, factor
 
 
-def deck_modes(deck: Deck, n: int | None = None) -> DeckModes:
+def deck_modes(deck: DeckLayout, n: int | None = None) -> DeckModes:
     """The deck's first ``n`` modes by the Rayleigh-Ritz method (module docstring).
 
     Parameters
@@ -304,10 +313,111 @@ def deck_modes(deck: Deck, n: int | None = None) -> DeckModes:
     TypeError, ValueError
         ``deck`` is not a :class:`~vbi_lib.decks.deck.Deck`; ``n`` not a whole number in range.
     """
-    check.instance("deck", deck, Deck, "a vbi.Deck")
+    check.instance("deck", deck, DeckLayout, "a vbi.Deck")
     basis, omega, vectors, factor = _solve(deck)
     if n is None:
         count = max(1, int(np.count_nonzero(omega < DEFAULT_MODE_RANGE * omega[0])))
     else:
         count = check.integer("n", n, low=1, high=omega.size)
     return DeckModes(deck, basis, omega[:count], vectors[:, :count], factor)
+
+
+def axle_shape(modes: DeckModes, path: WheelPath, s: object, order: int = 0) -> np.ndarray:
+    """Mean of the wheels' ``d^order phi_n / ds^order`` at travel ``s``, shape ``(n_s, N)``.
+
+    ``order`` 0 (shape [kg^-1/2]) or 1 (slope along travel [kg^-1/2 / m]).  At a station
+    where a wheel crosses a support line the slope is the one on the far side (the support's
+    own span convention, :mod:`vbi_lib.continuous_beams`).
+    """
+    order = check.integer("order", order, low=0, high=1)
+    s = np.atleast_1d(check.real_array("s", s)).ravel()
+    xs = path.wheel_x(modes.deck, s)
+    total = np.zeros((s.size, modes.count))
+    for i, y in enumerate(path.wheels):
+        total += modes.derivative(xs[:, i], np.full(s.size, y), along=order)
+    sign = float(path.direction) ** order
+    return sign * total / len(path.wheels)
+
+
+def path_tables(
+    modes: DeckModes, path: WheelPath, responses: object, spacing: float | None = None
+) -> PathTables:
+    """The tables of :class:`PathTables` for ``path`` and ``responses`` on ``modes``' deck.
+
+    Parameters
+    ----------
+    modes
+        The deck's N modes (:meth:`vbi_lib.Deck.modes`).
+    path
+        The wheel path; every wheel must lie on the deck's width.
+    responses
+        Response points ``(x, y)`` [m], shape ``(n_r, 2)`` (a girder's midspan is
+        ``(L/2, y_girder)``).
+    spacing
+        Largest distance between stations [m]; default an eighth of the shortest half
+        wavelength of the Ritz functions along (cubic Hermite interpolation then errs by
+        under 1e-4 of a shape's amplitude).
+
+    Raises
+    ------
+    ValueError
+        A wheel off the deck's width, a response point off the deck, a spacing <= 0.
+    """
+    deck = modes.deck
+    check.instance("path", path, WheelPath, "a WheelPath")
+    path.check_on(deck)
+    if spacing is None:
+        spacing = np.pi / float(modes.basis.wavenumber.max()) / 8.0
+    spacing = check.positive("spacing", spacing)
+    entry, exit_ = path.extent(deck)
+    count = max(2, int(np.ceil((exit_ - entry) / spacing)) + 1)
+    grid = np.linspace(entry, exit_, count)
+    breaks = path.crossings(deck)
+    breaks = breaks[(breaks > entry) & (breaks < exit_)]
+    plain = np.setdiff1d(grid, breaks)
+    stations = np.sort(np.concatenate([plain, breaks, breaks]))
+    shape = axle_shape(modes, path, stations, 0)
+    slope = axle_shape(modes, path, stations, 1)
+    # one-sided slopes at each repeated station: before it, then after it
+    nudge = 1e-9 * max(deck.length, 1.0)
+    for b in breaks:
+        first = int(np.searchsorted(stations, b, side="left"))
+        slope[first] = axle_shape(modes, path, [b - nudge], 1)[0]
+        slope[first + 1] = axle_shape(modes, path, [b + nudge], 1)[0]
+    points = check.real_array("responses", responses)
+    if points.ndim == 1 and points.size == 2:
+        points = points[None, :]
+    if points.ndim != 2 or points.shape[1] != 2:
+        raise ValueError(f"responses must be (x, y) points, shape (n, 2); got {points.shape}")
+    if (points[:, 0] < 0).any() or (points[:, 0] > deck.length * (1 + 1e-12)).any():
+        raise ValueError(
+            f"responses must lie on the deck: x from 0 to {deck.length:g} m; got "
+            f"{points[:, 0].min():g} to {points[:, 0].max():g} m"
+        )
+    response_shape = modes.shape(points[:, 0], points[:, 1])
+    xs = path.wheel_x(deck, stations)
+    static = np.zeros((points.shape[0], stations.size))
+    for i, y in enumerate(path.wheels):
+        loads = np.column_stack([xs[:, i], np.full(stations.size, y)])
+        static += modes.static_flexibility(loads, points)
+    static /= len(path.wheels)
+    modal = (response_shape / modes.omega**2) @ shape.T
+    tables = PathTables(
+        path=path,
+        stations=stations,
+        shape=shape,
+        slope=slope,
+        omega=np.array(modes.omega),
+        damping_ratio=modes.damping_ratios,
+        responses=points,
+        response_shape=response_shape,
+        static_flexibility=static,
+        residual_flexibility=static - modal,
+        entry=entry,
+        exit=exit_,
+    )
+    for array in (tables.stations, tables.shape, tables.slope, tables.omega,
+                  tables.damping_ratio, tables.responses, tables.response_shape,
+                  tables.static_flexibility, tables.residual_flexibility):  # fmt: skip
+        array.setflags(write=False)
+    return tables

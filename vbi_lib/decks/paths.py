@@ -13,8 +13,9 @@ meet a support line at different ``s`` (at :math:`s = \pm t\,\text{track}/2`), s
 partly on the deck for a short while at each end.  A wheel off the deck (on the approach)
 carries nothing.
 
-:func:`path_tables` gives, for N modes, everything a modal crossing with the
-mode-acceleration correction needs (the lead's kernel reads a bridge as data):
+:meth:`vbi_lib.decks.modes.DeckModes.path_tables` gives, for N modes, everything a modal
+crossing with the mode-acceleration correction needs (the lead's kernel reads a bridge as
+data):
 
 * ``omega`` and ``damping_ratio`` of each mode;
 * along the path, at stations ``s``: :math:`\bar\phi_n` and :math:`d\bar\phi_n/ds`, for
@@ -30,18 +31,14 @@ mode-acceleration correction needs (the lead's kernel reads a bridge as data):
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from .. import _validation as check
 from .. import units as u
+from .layout import DeckLayout
 
-if TYPE_CHECKING:
-    from .deck import Deck
-    from .modes import DeckModes
-
-__all__ = ["DEFAULT_TRACK", "PathTables", "WheelPath", "path_tables"]
+__all__ = ["DEFAULT_TRACK", "PathTables", "WheelPath"]
 
 #: Distance between the two wheels of an axle: the study's twin loads, 6 ft [m].
 DEFAULT_TRACK = 6 * u.ft
@@ -82,7 +79,7 @@ class WheelPath:
     @classmethod
     def from_girder(
         cls,
-        deck: Deck,
+        deck: DeckLayout,
         distance: float = 0.0,
         girder: int = 1,
         *,
@@ -104,7 +101,7 @@ class WheelPath:
         half = 0.5 * self.track
         return (self.offset - half, self.offset + half)
 
-    def check_on(self, deck: Deck) -> None:
+    def check_on(self, deck: DeckLayout) -> None:
         """Raise ``ValueError`` unless every wheel lies on the deck's width."""
         for y in self.wheels:
             if not -1e-12 <= y <= deck.width * (1 + 1e-12):
@@ -113,7 +110,7 @@ class WheelPath:
                     f"{self.track:g} m runs at y={y:g} m, off the deck (0 to {deck.width:g} m)"
                 )
 
-    def wheel_x(self, deck: Deck, s: np.ndarray) -> np.ndarray:
+    def wheel_x(self, deck: DeckLayout, s: np.ndarray) -> np.ndarray:
         """``x`` (along the girders, :mod:`vbi_lib.decks.deck`) of each wheel at travel ``s``.
 
         Shape ``(n_s, n_wheels)``: ``s - t (y_i - offset)`` one way, ``L - s - t (y_i -
@@ -125,7 +122,7 @@ class WheelPath:
             return s[:, None] - shift[None, :]
         return deck.length - s[:, None] - shift[None, :]
 
-    def extent(self, deck: Deck) -> tuple[float, float]:
+    def extent(self, deck: DeckLayout) -> tuple[float, float]:
         """``(entry, exit)``: travel ``s`` where the first wheel meets the deck, the last leaves."""
         shift = deck.tangent * (np.array(self.wheels) - self.offset)
         if self.direction == 1:
@@ -134,7 +131,7 @@ class WheelPath:
             on = -shift
         return float(on.min()), float(on.max() + deck.length)
 
-    def crossings(self, deck: Deck) -> np.ndarray:
+    def crossings(self, deck: DeckLayout) -> np.ndarray:
         """Travel ``s`` where any wheel crosses any support line, sorted (slope jumps there)."""
         shift = deck.tangent * (np.array(self.wheels) - self.offset)
         supports = np.array(deck.supports)
@@ -143,23 +140,6 @@ class WheelPath:
         else:
             points = deck.length - supports[:, None] - shift[None, :]
         return np.unique(points.ravel())
-
-
-def axle_shape(modes: DeckModes, path: WheelPath, s: object, order: int = 0) -> np.ndarray:
-    """Mean of the wheels' ``d^order phi_n / ds^order`` at travel ``s``, shape ``(n_s, N)``.
-
-    ``order`` 0 (shape [kg^-1/2]) or 1 (slope along travel [kg^-1/2 / m]).  At a station
-    where a wheel crosses a support line the slope is the one on the far side (the support's
-    own span convention, :mod:`vbi_lib.continuous_beams`).
-    """
-    order = check.integer("order", order, low=0, high=1)
-    s = np.atleast_1d(check.real_array("s", s)).ravel()
-    xs = path.wheel_x(modes.deck, s)
-    total = np.zeros((s.size, modes.count))
-    for i, y in enumerate(path.wheels):
-        total += modes.derivative(xs[:, i], np.full(s.size, y), along=order)
-    sign = float(path.direction) ** order
-    return sign * total / len(path.wheels)
 
 
 @dataclass(frozen=True, eq=False)
@@ -249,87 +229,3 @@ class PathTables:
             f"{self.stations.size} stations from {self.entry:.3f} to {self.exit:.3f} m, "
             f"{self.responses.shape[0]} response points)"
         )
-
-
-def path_tables(
-    modes: DeckModes, path: WheelPath, responses: object, spacing: float | None = None
-) -> PathTables:
-    """The tables of :class:`PathTables` for ``path`` and ``responses`` on ``modes``' deck.
-
-    Parameters
-    ----------
-    modes
-        The deck's N modes (:meth:`vbi_lib.Deck.modes`).
-    path
-        The wheel path; every wheel must lie on the deck's width.
-    responses
-        Response points ``(x, y)`` [m], shape ``(n_r, 2)`` (a girder's midspan is
-        ``(L/2, y_girder)``).
-    spacing
-        Largest distance between stations [m]; default an eighth of the shortest half
-        wavelength of the Ritz functions along (cubic Hermite interpolation then errs by
-        under 1e-4 of a shape's amplitude).
-
-    Raises
-    ------
-    ValueError
-        A wheel off the deck's width, a response point off the deck, a spacing <= 0.
-    """
-    deck = modes.deck
-    check.instance("path", path, WheelPath, "a WheelPath")
-    path.check_on(deck)
-    if spacing is None:
-        spacing = np.pi / float(modes.basis.wavenumber.max()) / 8.0
-    spacing = check.positive("spacing", spacing)
-    entry, exit_ = path.extent(deck)
-    count = max(2, int(np.ceil((exit_ - entry) / spacing)) + 1)
-    grid = np.linspace(entry, exit_, count)
-    breaks = path.crossings(deck)
-    breaks = breaks[(breaks > entry) & (breaks < exit_)]
-    plain = np.setdiff1d(grid, breaks)
-    stations = np.sort(np.concatenate([plain, breaks, breaks]))
-    shape = axle_shape(modes, path, stations, 0)
-    slope = axle_shape(modes, path, stations, 1)
-    # one-sided slopes at each repeated station: before it, then after it
-    nudge = 1e-9 * max(deck.length, 1.0)
-    for b in breaks:
-        first = int(np.searchsorted(stations, b, side="left"))
-        slope[first] = axle_shape(modes, path, [b - nudge], 1)[0]
-        slope[first + 1] = axle_shape(modes, path, [b + nudge], 1)[0]
-    points = check.real_array("responses", responses)
-    if points.ndim == 1 and points.size == 2:
-        points = points[None, :]
-    if points.ndim != 2 or points.shape[1] != 2:
-        raise ValueError(f"responses must be (x, y) points, shape (n, 2); got {points.shape}")
-    if (points[:, 0] < 0).any() or (points[:, 0] > deck.length * (1 + 1e-12)).any():
-        raise ValueError(
-            f"responses must lie on the deck: x from 0 to {deck.length:g} m; got "
-            f"{points[:, 0].min():g} to {points[:, 0].max():g} m"
-        )
-    response_shape = modes.shape(points[:, 0], points[:, 1])
-    xs = path.wheel_x(deck, stations)
-    static = np.zeros((points.shape[0], stations.size))
-    for i, y in enumerate(path.wheels):
-        loads = np.column_stack([xs[:, i], np.full(stations.size, y)])
-        static += modes.static_flexibility(loads, points)
-    static /= len(path.wheels)
-    modal = (response_shape / modes.omega**2) @ shape.T
-    tables = PathTables(
-        path=path,
-        stations=stations,
-        shape=shape,
-        slope=slope,
-        omega=np.array(modes.omega),
-        damping_ratio=modes.damping_ratios,
-        responses=points,
-        response_shape=response_shape,
-        static_flexibility=static,
-        residual_flexibility=static - modal,
-        entry=entry,
-        exit=exit_,
-    )
-    for array in (tables.stations, tables.shape, tables.slope, tables.omega,
-                  tables.damping_ratio, tables.responses, tables.response_shape,
-                  tables.static_flexibility, tables.residual_flexibility):  # fmt: skip
-        array.setflags(write=False)
-    return tables

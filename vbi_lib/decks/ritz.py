@@ -51,7 +51,7 @@ import numpy as np
 from .basis import RitzBasis
 
 if TYPE_CHECKING:
-    from .deck import Deck
+    from .layout import DeckLayout
 
 __all__ = ["stiffness_and_mass"]
 
@@ -65,7 +65,7 @@ def curvature_transform(tangent: float) -> np.ndarray:
     return np.array([[1.0, 0.0, 0.0], [t * t, -2.0 * t, 1.0], [-2.0 * t, 2.0, 0.0]])
 
 
-def stiffness_and_mass(deck: Deck, basis: RitzBasis) -> tuple[np.ndarray, np.ndarray]:
+def stiffness_and_mass(deck: DeckLayout, basis: RitzBasis) -> tuple[np.ndarray, np.ndarray]:
     """The deck's stiffness ``K`` [N/m] and mass ``M`` [kg] matrices, ``(M Q, M Q)`` each.
 
     Units: with ``c`` in metres, ``c^T K c / 2`` is the strain energy [J] and

@@ -27,13 +27,14 @@ import numpy as np
 
 from .. import _validation as check
 from ..ranges import check_range
-from .deck import Deck
+from .layout import DeckLayout
+from .modes import deck_modes
 from .paths import WheelPath
 
 __all__ = ["axle_deflection", "fit_to_path", "midspan_stiffness"]
 
 
-def _path(deck: Deck, path: WheelPath | float) -> WheelPath:
+def _path(deck: DeckLayout, path: WheelPath | float) -> WheelPath:
     if not isinstance(path, WheelPath):
         path = WheelPath(check.finite("path", path))
     path.check_on(deck)
@@ -41,7 +42,7 @@ def _path(deck: Deck, path: WheelPath | float) -> WheelPath:
 
 
 def axle_deflection(
-    deck: Deck, path: WheelPath | float, station: float, responses: object
+    deck: DeckLayout, path: WheelPath | float, station: float, responses: object
 ) -> np.ndarray:
     """Static deflection [m/N] at ``responses`` under a unit axle load at travel ``station``.
 
@@ -51,13 +52,15 @@ def axle_deflection(
     """
     path = _path(deck, path)
     station = check.finite("station", station)
-    modes = deck.modes(1)
+    modes = deck_modes(deck, 1)
     xs = path.wheel_x(deck, [station])[0]
     loads = np.column_stack([xs, path.wheels])
     return modes.static_flexibility(loads, responses).mean(axis=1)
 
 
-def midspan_stiffness(deck: Deck, path: WheelPath | float, girder: int, span: int = 1) -> float:
+def midspan_stiffness(
+    deck: DeckLayout, path: WheelPath | float, girder: int, span: int = 1
+) -> float:
     """The study's ``K_mid`` [N/m]: twin loads at midspan of ``span`` on ``path``, at ``girder``.
 
     Load (1 N in all, halved between the wheels) over the deflection of girder ``girder``
@@ -91,13 +94,13 @@ def midspan_stiffness(deck: Deck, path: WheelPath | float, girder: int, span: in
 
 
 def fit_to_path(
-    deck: Deck,
+    deck: DeckLayout,
     k_mid: float,
     first_frequency_hz: float,
     path: WheelPath | float,
     girder: int,
     span: int = 1,
-) -> Deck:
+) -> DeckLayout:
     """The deck with every rigidity and mass scaled so that its ``K_mid`` and f1 are these.
 
     Two scalars (module docstring), as the study's beam is fitted (82)-(84).
@@ -128,5 +131,5 @@ def fit_to_path(
     frequency = check_range("bridge_frequency", first_frequency_hz, "first_frequency_hz")
     drawn = midspan_stiffness(deck, path, girder, span)
     stiffness = k_mid / drawn
-    mass = stiffness * (deck.first_frequency_hz() / frequency) ** 2
+    mass = stiffness * (deck_modes(deck, 1).frequencies_hz[0] / frequency) ** 2
     return deck.scaled(stiffness, mass)

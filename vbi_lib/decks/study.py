@@ -48,7 +48,8 @@ from functools import lru_cache
 from .. import _validation as check
 from .. import units as u
 from ..bridges import Bridge, reference_beam
-from .deck import Deck, Diaphragms, EdgeBeam, Girders
+from .deck import Deck
+from .members import Diaphragms, EdgeBeam, Girders
 from .paths import WheelPath
 from .sections import GirderSection, Part, composite_rigidity
 from .statics import fit_to_path
@@ -58,6 +59,7 @@ __all__ = [
     "STUDY_SKEW",
     "StudyDeck",
     "StudyPath",
+    "assessment_site",
     "study_deck",
     "study_site",
 ]
@@ -351,3 +353,22 @@ def study_site(
             "the seed does not say which way (skew_hand='left' or 'right' draws it skewed)"
         )
     return StudyDeck(fitted, wheel_path, where.girder, None, tuple(notes))
+
+
+def assessment_site(row: object, skew_hand: str | None = None,
+                    damping_ratio: float = 0.01) -> StudyDeck:  # fmt: skip
+    """:func:`study_site` of a row of the study's assessment table (US customary columns).
+
+    Reads ``span_ft``, ``n_spans``, ``path``, ``k_mid_lbf_per_in`` and ``bridge_f1_hz``;
+    ``skew_hand`` applies to the 40 ft decks only (the others have no skew).
+    """
+    span = check.number("span_ft", row.span_ft)
+    return study_site(
+        span,
+        int(row.n_spans),
+        int(row.path),
+        row.k_mid_lbf_per_in * u.lbf / u.inch,
+        row.bridge_f1_hz,
+        skew_hand=skew_hand if span == 40 else None,
+        damping_ratio=damping_ratio,
+    )
