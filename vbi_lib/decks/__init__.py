@@ -1,11 +1,12 @@
 """Decks across their width: slab, girders, edge beams, diaphragms and skew (issue 26).
 
-A beam (:class:`vbi_lib.Bridge`) lumps a bridge's width into one line.  A :class:`Deck` keeps
-it: a Kirchhoff slab on line girders, whose modes come from the Rayleigh-Ritz method
-(:mod:`~vbi_lib.decks.ritz`), with shapes, slopes and static flexibility anywhere on the
-deck (:mod:`~vbi_lib.decks.modes`), the tables a modal crossing needs along a wheel path
-(:mod:`~vbi_lib.decks.paths`), the statics of the study's twin loads
-(:mod:`~vbi_lib.decks.statics`) and the study's own decks (:mod:`~vbi_lib.decks.study`).
+A beam (:class:`vbi_lib.Bridge`) lumps a bridge's width into one line.  A
+:class:`~vbi_lib.decks.deck.Deck` keeps it: a Kirchhoff slab on line girders, whose modes
+come from the Rayleigh-Ritz method (:mod:`~vbi_lib.decks.ritz`), with shapes, slopes and
+static flexibility anywhere on the deck (:mod:`~vbi_lib.decks.modes`), the tables a modal
+crossing needs along a wheel path (:mod:`~vbi_lib.decks.paths`), the statics of the study's
+twin loads (:mod:`~vbi_lib.decks.statics`) and the study's own decks
+(:mod:`~vbi_lib.decks.study`).
 """
 
 from .deck import Deck

@@ -31,14 +31,14 @@ class Deck(DeckLayout):
     E, poisson, density
         The slab's Young's modulus [Pa], Poisson's ratio and density [kg/m^3].
     girders
-        :class:`Girders` or ``None`` (a bare slab).
+        :class:`~vbi_lib.decks.members.Girders` or ``None`` (a bare slab).
     overhang
         Distance from the edge ``y = 0`` to girder 1 [m]; ``None``: the girders centred.
     edge_beams
-        An :class:`EdgeBeam` on both sides, a pair ``(at y = 0, at y = width)`` (either may
-        be ``None``), or ``None``.
+        An :class:`~vbi_lib.decks.members.EdgeBeam` on both sides, a pair ``(at y = 0, at
+        y = width)`` (either may be ``None``), or ``None``.
     diaphragms
-        :class:`Diaphragms` or ``None``.
+        :class:`~vbi_lib.decks.members.Diaphragms` or ``None``.
     skew
         Angle between the support lines and the normal to the girders [degrees], 0 to 60.
     skew_hand

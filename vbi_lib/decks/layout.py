@@ -1,10 +1,11 @@
 r"""A slab-on-girder deck: the bridge across its width, not reduced to one beam.
 
-:class:`Deck` describes a deck as an engineer draws it: spans along the girders (one simple
-span or several continuous ones), a slab of given width, thickness and material, girders
-under it, barriers or edge beams along its sides, diaphragms across it and a skew.
-:meth:`Deck.plate` is the bare slab.  Its modes (:mod:`vbi_lib.decks.modes`) come from the
-Rayleigh-Ritz method of :mod:`vbi_lib.decks.ritz`.
+:class:`~vbi_lib.decks.deck.Deck` describes a deck as an engineer draws it: spans along the
+girders (one simple span or several continuous ones), a slab of given width, thickness and
+material, girders under it, barriers or edge beams along its sides, diaphragms across it and
+a skew.  :meth:`~vbi_lib.decks.layout.DeckLayout.plate` is the bare slab.  Its modes
+(:mod:`vbi_lib.decks.modes`) come from the Rayleigh-Ritz method of
+:mod:`vbi_lib.decks.ritz`.
 
 Coordinates and the skew's hand
 -------------------------------
@@ -209,8 +210,9 @@ class DeckLayout:
         """A bare slab simply supported at both ends and free along its sides.
 
         ``length`` along the supported edges' normal [m], ``width`` [m], ``thickness`` [m],
-        ``E`` [Pa], ``poisson``, ``density`` [kg/m^3]; ``options`` are :class:`Deck`'s
-        keywords (``skew``, ``skew_hand``, ``damping_ratio``, ``sides``, ``resolution``).
+        ``E`` [Pa], ``poisson``, ``density`` [kg/m^3]; ``options`` are the deck's keywords
+        (``skew``, ``skew_hand``, ``damping_ratio``, ``sides``, ``resolution``;
+        :class:`~vbi_lib.decks.deck.Deck`).
         A skewed plate is a parallelogram: its free sides are ``length`` long and
         ``width`` apart.
         """

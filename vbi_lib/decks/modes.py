@@ -197,7 +197,7 @@ class DeckModes:
     def path_tables(
         self, path: WheelPath, responses: object, spacing: float | None = None
     ) -> PathTables:
-        """What a modal crossing needs along ``path`` (:func:`vbi_lib.decks.paths.path_tables`)."""
+        """What a modal crossing needs along ``path`` (:func:`vbi_lib.decks.modes.path_tables`)."""
         return path_tables(self, path, responses, spacing)
 
     # ------------------------------------------------------------------ output
@@ -257,9 +257,9 @@ class DeckModes:
 def _solve(deck: DeckLayout) -> tuple[RitzBasis, np.ndarray, np.ndarray, Any]:
     """Every mode the deck's basis holds (up to the ``modes`` limit), and K's Cholesky factor.
 
-    A deck scaled from another (:meth:`DeckLayout.scaled`: rigidities times ``s``, masses
-    times ``m``) has the other's modes exactly: ``omega sqrt(s / m)``, vectors over
-    ``sqrt(m)``, ``K``'s factor times ``sqrt(s)``.
+    A deck scaled from another (:meth:`~vbi_lib.decks.layout.DeckLayout.scaled`: rigidities
+    times ``s``, masses times ``m``) has the other's modes exactly: ``omega sqrt(s / m)``,
+    vectors over ``sqrt(m)``, ``K``'s factor times ``sqrt(s)``.
     """
     origin = getattr(deck, "_scaled_from", None)
     if origin is not None:
@@ -342,7 +342,7 @@ def axle_shape(modes: DeckModes, path: WheelPath, s: object, order: int = 0) -> 
 def path_tables(
     modes: DeckModes, path: WheelPath, responses: object, spacing: float | None = None
 ) -> PathTables:
-    """The tables of :class:`PathTables` for ``path`` and ``responses`` on ``modes``' deck.
+    """:class:`~vbi_lib.decks.paths.PathTables` for ``path`` and ``responses`` on a deck's modes.
 
     Parameters
     ----------

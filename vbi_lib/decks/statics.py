@@ -119,7 +119,7 @@ def fit_to_path(
     Returns
     -------
     Deck
-        :meth:`Deck.scaled` by ``s_k`` and ``s_m``.
+        :meth:`~vbi_lib.decks.layout.DeckLayout.scaled` by ``s_k`` and ``s_m``.
 
     Raises
     ------
