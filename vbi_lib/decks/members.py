@@ -20,6 +20,12 @@ from .sections import GirderSection
 __all__ = ["Diaphragms", "EdgeBeam", "Girders", "LineMember"]
 
 
+def _check_fields(member: object, **keys: str) -> None:
+    """Each named field of a frozen member checked against ``RANGES[key]`` and stored."""
+    for name, key in keys.items():
+        object.__setattr__(member, name, check_range(key, getattr(member, name), name))
+
+
 def _one_or_each(name: str, value: object, count: int, key: str) -> tuple[float, ...]:
     """A number, or one number per girder, checked against ``RANGES[key]``."""
     if isinstance(value, str | bytes) or not isinstance(value, Sequence | np.ndarray):
@@ -125,14 +131,8 @@ class EdgeBeam:
     offset: float = 0.0
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "EI", check_range("member_EI", self.EI, "EI"))
-        object.__setattr__(
-            self,
-            "mass_per_length",
-            check_range("line_mass", self.mass_per_length, "mass_per_length"),  # fmt: skip
-        )
-        object.__setattr__(self, "GJ", check_range("torsional_rigidity", self.GJ, "GJ"))
-        object.__setattr__(self, "offset", check_range("overhang", self.offset, "offset"))
+        _check_fields(self, EI="member_EI", mass_per_length="line_mass",
+                      GJ="torsional_rigidity", offset="overhang")  # fmt: skip
 
     @classmethod
     def rectangle(
@@ -172,12 +172,7 @@ class Diaphragms:
     stations: tuple[float, ...] | str = "midspans"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "EI", check_range("member_EI", self.EI, "EI"))
-        object.__setattr__(
-            self,
-            "mass_per_length",
-            check_range("line_mass", self.mass_per_length, "mass_per_length"),  # fmt: skip
-        )
+        _check_fields(self, EI="member_EI", mass_per_length="line_mass")
         if isinstance(self.stations, str):
             check.choice("stations", self.stations, ("midspans",))
         else:
