@@ -32,6 +32,7 @@ import vbi_lib as vbi  # noqa: E402
 from vbi_lib import study_data as sd  # noqa: E402
 from vbi_lib import units as u  # noqa: E402
 from vbi_lib.decks import WheelPath  # noqa: E402
+from vbi_lib.decks.study import assessment_site  # noqa: E402
 
 
 def main() -> None:
@@ -41,6 +42,7 @@ def main() -> None:
     parser.add_argument("--beam", action="store_true")
     parser.add_argument("--rows", type=int, default=None)
     parser.add_argument("--span", type=float, default=None, help="only the rows of this span")
+    parser.add_argument("--barriers", default=None, choices=["composite", "own"])
     parser.add_argument("--out", default=None)
     args = parser.parse_args()
     data = HERE.parents[2] / "shared" / "data" / "seed-study"
@@ -51,6 +53,10 @@ def main() -> None:
         table = table.iloc[: args.rows]
     warnings.simplefilter("ignore", vbi.VbiWarning)
     sites, trucks, roads = sd.assessment_inputs(table, profiles, beam="deck", skew_hand=args.skew)
+    if args.barriers is not None:  # the barriers' action, which the seed leaves open
+        sites = [
+            assessment_site(row, args.skew, barriers=args.barriers) for row in table.itertuples()
+        ]
     exact, _, _ = sd.assessment_inputs(table, profiles, beam="exact")
     cache: dict[object, dc.BridgeData] = {}
     predicted = []
@@ -79,6 +85,8 @@ def main() -> None:
     table = table.assign(predicted=predicted)
     table["error"] = (table.predicted - table.fe_daf).abs() / table.fe_daf
     label = "beam" if args.beam else f"deck skew={args.skew} track={args.track:g}ft"
+    if args.barriers:
+        label += f" barriers={args.barriers}"
     print(f"\n{label}: MAPE against the FE DAF")
     print(table.groupby("n_spans").error.mean().round(4).to_string())
     print(table.groupby(["n_spans", "span_ft"]).error.mean().round(4).to_string())

@@ -104,3 +104,21 @@ def test_the_skew_hand_changes_the_40_ft_decks_only(assessment, shared_data) -> 
     f_square = square[j].deck.frequencies_hz(3)
     assert f_skew[0] == pytest.approx(f_square[0], rel=1e-12)
     assert abs(f_skew[1] / f_skew[0] - f_square[1] / f_square[0]) > 1e-4
+
+
+def test_the_barriers_act_as_asked_and_by_default_as_the_seed_reads() -> None:
+    """The seed says the 40 ft barriers were "modeled with a rectangular section" (composite
+    with the exterior girder, as eccentric beams are); of the 100 ft ones only their size."""
+    for span, default in ((40, "composite"), (100, "own")):
+        assert study_deck(span, 1) == study_deck(span, 1, barriers=default)
+        other = "own" if default == "composite" else "composite"
+        stiff = study_deck(span, 1, barriers="composite")
+        alone = study_deck(span, 1, barriers="own")
+        assert study_deck(span, 1) != study_deck(span, 1, barriers=other)
+        # composite action puts most of the edge's rigidity on the barrier line
+        assert stiff.edge_beams[0].EI > 3 * alone.edge_beams[0].EI
+        assert stiff.edge_beams[0].mass_per_length == pytest.approx(
+            alone.edge_beams[0].mass_per_length
+        )
+    with pytest.raises(ValueError, match="barriers='eccentric'"):
+        study_deck(40, 1, barriers="eccentric")

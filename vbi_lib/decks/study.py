@@ -30,10 +30,18 @@ diaphragms at its midspans (one line per span, its steel channel's own section);
 40 ft barriers acting with the exterior girder as one composite section, as the eccentric
 beams of the study's model do (their share of that section's rigidity on the edge line);
 the 100 ft barriers with their own section only (the seed gives their size, not that they
-were modelled as members); no haunches.  Every girder is composite with its tributary slab
-(:class:`~vbi_lib.decks.sections.GirderSection`).  These fix the deck's *shape*; its
-rigidity and mass are then scaled to each row's ``K_mid`` and ``f1``
-(:func:`~vbi_lib.decks.statics.fit_to_path`).
+were modelled as members; ``barriers=`` changes either); no haunches.  Every girder is
+composite with its tributary slab (:class:`~vbi_lib.decks.sections.GirderSection`).  These
+fix the deck's *shape*; its rigidity and mass are then scaled to each row's ``K_mid`` and
+``f1`` (:func:`~vbi_lib.decks.statics.fit_to_path`), and "f1" is the deck's lowest mode:
+on the drawn 100 ft deck a torsional mode, 1.5 % below the first bending one.
+
+Drawn, before any scaling, the 40 ft deck has K_mid 0.93 (path 1) and 0.96 (path 2) of
+Table 2.13.7's and a first frequency of 10.38 Hz against 9.95; the 100 ft deck is softer,
+K_mid 0.42-0.49 of Table 2.13.6's and 2.73 Hz against 3.99, and its exterior girder carries
+path 1 with 0.65 of path 3's stiffness against the table's 0.75.  What the seed's decks had
+that these lack is not known (composite barriers would raise the 100 ft deck to 3.48 Hz but
+make its exterior girder the stiffest).
 
 The default 40 ft deck is not skewed: the seed gives the angle (16 degrees) but not the hand,
 which way the skew runs relative to the direction of travel.  ``skew_hand="left"`` or
@@ -55,6 +63,7 @@ from .sections import GirderSection, Part, composite_rigidity
 from .statics import fit_to_path
 
 __all__ = [
+    "DEFAULT_BARRIERS",
     "STUDY_PATHS",
     "STUDY_SKEW",
     "StudyDeck",
@@ -143,9 +152,17 @@ def _check_span(span_ft: object, n_spans: object) -> tuple[int, int]:
     return int(span), n_spans
 
 
+#: How each deck's barriers act when ``barriers`` is not given (module docstring).
+DEFAULT_BARRIERS = {40: "composite", 100: "own"}
+
+
 @lru_cache(maxsize=16)
 def study_deck(
-    span_ft: int, n_spans: int, skew_hand: str | None = None, damping_ratio: float = 0.01
+    span_ft: int,
+    n_spans: int,
+    skew_hand: str | None = None,
+    damping_ratio: float = 0.01,
+    barriers: str | None = None,
 ) -> Deck:
     """The study's 40 ft or 100 ft deck as drawn (module docstring), one span or two.
 
@@ -160,6 +177,12 @@ def study_deck(
         with that hand, :mod:`vbi_lib.decks.deck`).
     damping_ratio
         Of every mode (the study: 1 %).
+    barriers
+        How the barriers act, which the seed does not say: ``"composite"`` (one section
+        with the exterior girder and its slab, as the eccentric beams of the study's model),
+        ``"own"`` (their own rectangle only) or ``None``: :data:`DEFAULT_BARRIERS`
+        (composite on the 40 ft deck, whose barriers the seed says were "modeled with a
+        rectangular section"; their own section on the 100 ft one).
 
     Examples
     --------
@@ -168,49 +191,75 @@ def study_deck(
     (7, 49.0, 10.38)
     """
     span, n_spans = _check_span(span_ft, n_spans)
+    if barriers is None:
+        barriers = DEFAULT_BARRIERS[span]
+    check.choice("barriers", barriers, ("composite", "own"))
     if span == 40:
-        return _deck_40(n_spans, skew_hand, damping_ratio)
+        return _deck_40(n_spans, skew_hand, damping_ratio, barriers)
     if skew_hand is not None:
         raise ValueError(
             f"skew_hand={skew_hand!r}: the seed gives the 100 ft deck no skew; use None"
         )
-    return _deck_100(n_spans, damping_ratio)
+    return _deck_100(n_spans, damping_ratio, barriers)
 
 
-def _deck_40(n_spans: int, skew_hand: str | None, damping_ratio: float) -> Deck:
-    spacing = 84 * u.inch
+def _girders_and_barriers(
+    section: GirderSection,
+    count: int,
+    spacing: float,
+    slab: float,
+    barrier: tuple[float, float],
+    barriers: str,
+) -> tuple[Girders, EdgeBeam]:
+    """Composite girders (tributary slab) and the barriers on the edges, acting as asked."""
     overhang = 0.5 * spacing
-    count = 7
-    width = (count - 1) * spacing + 2 * overhang
-    slab = 8.5 * u.inch
-    section = _w30x108()
     interior = section.composite(spacing, slab, _SLAB_E)
     exterior_width = 0.5 * spacing + overhang
-    # exterior girder, its slab and the barrier bend as one section (an eccentric beam model)
-    barrier_w, barrier_h = 19 * u.inch, 32 * u.inch
-    top = section.depth + slab
-    barrier = Part.rectangle(_SLAB_E, barrier_w, barrier_h, top)
-    parts = [
-        section.part(),
-        Part.rectangle(_SLAB_E, exterior_width, slab, section.depth),
-        barrier,
-    ]
-    whole, axis = composite_rigidity(parts)
-    barrier_share = barrier.E * (barrier.inertia + barrier.area * (barrier.height - axis) ** 2)
-    exterior = whole - barrier_share
+    width, height = barrier
+    if barriers == "composite":
+        # exterior girder, its slab and the barrier bend as one section (eccentric beams)
+        part = Part.rectangle(_SLAB_E, width, height, section.depth + section.haunch + slab)
+        slab_part = Part.rectangle(_SLAB_E, exterior_width, slab, section.depth + section.haunch)
+        whole, axis = composite_rigidity([section.part(), slab_part, part])
+        share = part.E * (part.inertia + part.area * (part.height - axis) ** 2)
+        exterior = whole - share
+        edge = EdgeBeam(share, _CONCRETE * width * height, 0.0, 0.5 * width)
+    else:
+        exterior = section.composite(exterior_width, slab, _SLAB_E)
+        edge = EdgeBeam.rectangle(width, height, _SLAB_E, _CONCRETE)
     rigidities = (exterior,) + (interior,) * (count - 2) + (exterior,)
-    girders = Girders(
-        count,
-        spacing,
-        rigidities,
-        section.mass_per_length,
-        section.torsional_rigidity,
-    )
-    edge = EdgeBeam(barrier_share, _CONCRETE * barrier_w * barrier_h, 0.0, 0.5 * barrier_w)
+    girders = Girders(count, spacing, rigidities, section.mass_per_length,
+                      section.torsional_rigidity)  # fmt: skip
+    return girders, edge
+
+
+def _deck_40(n_spans: int, skew_hand: str | None, damping_ratio: float, barriers: str) -> Deck:
+    spacing, count, slab = 84 * u.inch, 7, 8.5 * u.inch
+    girders, edge = _girders_and_barriers(_w30x108(), count, spacing, slab,
+                                          (19 * u.inch, 32 * u.inch), barriers)  # fmt: skip
     channel = Diaphragms(_STEEL_E * 315 * u.inch**4, 33.9 * u.lbf / u.ft / u.g)
+    return _seed_deck(40 * u.ft, n_spans, count, spacing, slab, girders, edge, channel,
+                      skew_hand, damping_ratio)  # fmt: skip
+
+
+def _deck_100(n_spans: int, damping_ratio: float, barriers: str) -> Deck:
+    spacing, count, slab = 99 * u.inch, 5, 9.5 * u.inch
+    girders, edge = _girders_and_barriers(_type_iv(), count, spacing, slab,
+                                          (24 * u.inch, 48 * u.inch), barriers)  # fmt: skip
+    thick, deep = 9 * u.inch, 37 * u.inch
+    diaphragms = Diaphragms(_SLAB_E * thick * deep**3 / 12.0, _CONCRETE * thick * deep)
+    return _seed_deck(100 * u.ft, n_spans, count, spacing, slab, girders, edge, diaphragms,
+                      None, damping_ratio)  # fmt: skip
+
+
+def _seed_deck(span: float, n_spans: int, count: int, spacing: float, slab: float,
+               girders: Girders, edge: EdgeBeam, diaphragms: Diaphragms,
+               skew_hand: str | None, damping_ratio: float) -> Deck:  # fmt: skip
+    """A deck of the seed: the overhang half a spacing, the slab's concrete, the skew if any."""
+    overhang = 0.5 * spacing
     return Deck(
-        (40 * u.ft,) * n_spans,
-        width,
+        (span,) * n_spans,
+        (count - 1) * spacing + 2 * overhang,
         slab,
         _SLAB_E,
         _POISSON,
@@ -218,37 +267,9 @@ def _deck_40(n_spans: int, skew_hand: str | None, damping_ratio: float) -> Deck:
         girders=girders,
         overhang=overhang,
         edge_beams=edge,
-        diaphragms=channel,
+        diaphragms=diaphragms,
         skew=STUDY_SKEW if skew_hand is not None else 0.0,
         skew_hand=skew_hand,
-        damping_ratio=damping_ratio,
-    )
-
-
-def _deck_100(n_spans: int, damping_ratio: float) -> Deck:
-    spacing = 99 * u.inch
-    overhang = 0.5 * spacing
-    count = 5
-    width = (count - 1) * spacing + 2 * overhang
-    slab = 9.5 * u.inch
-    girders = Girders(count, spacing, section=_type_iv())
-    barrier = EdgeBeam.rectangle(24 * u.inch, 48 * u.inch, _SLAB_E, _CONCRETE)
-    diaphragm = 9 * u.inch, 37 * u.inch
-    diaphragms = Diaphragms(
-        _SLAB_E * diaphragm[0] * diaphragm[1] ** 3 / 12.0,
-        _CONCRETE * diaphragm[0] * diaphragm[1],
-    )
-    return Deck(
-        (100 * u.ft,) * n_spans,
-        width,
-        slab,
-        _SLAB_E,
-        _POISSON,
-        _CONCRETE,
-        girders=girders,
-        overhang=overhang,
-        edge_beams=barrier,
-        diaphragms=diaphragms,
         damping_ratio=damping_ratio,
     )
 
@@ -297,6 +318,7 @@ def study_site(
     *,
     skew_hand: str | None = None,
     damping_ratio: float = 0.01,
+    barriers: str | None = None,
 ) -> StudyDeck:
     """One assessment row's deck, path and girder: the drawn deck fitted to ``K_mid`` and ``f1``.
 
@@ -312,6 +334,8 @@ def study_site(
         For the 40 ft deck: ``None`` (not skewed), ``"left"`` or ``"right"`` (16 degrees).
     damping_ratio
         Of every mode.
+    barriers
+        How the barriers act (:func:`study_deck`); ``None``: :data:`DEFAULT_BARRIERS`.
 
     Returns
     -------
@@ -343,7 +367,7 @@ def study_site(
             f"it has paths {sorted(p for s, n, p in STUDY_PATHS if (s, n) == key[:2])}"
         )
     where = STUDY_PATHS[key]
-    drawn = study_deck(span_int, n_spans, skew_hand, damping_ratio)
+    drawn = study_deck(span_int, n_spans, skew_hand, damping_ratio, barriers)
     wheel_path = WheelPath.from_girder(drawn, where.distance)
     fitted = fit_to_path(drawn, k_mid, first_frequency_hz, wheel_path, where.girder)
     notes = []
@@ -355,8 +379,8 @@ def study_site(
     return StudyDeck(fitted, wheel_path, where.girder, None, tuple(notes))
 
 
-def assessment_site(row: object, skew_hand: str | None = None,
-                    damping_ratio: float = 0.01) -> StudyDeck:  # fmt: skip
+def assessment_site(row: object, skew_hand: str | None = None, damping_ratio: float = 0.01,
+                    barriers: str | None = None) -> StudyDeck:  # fmt: skip
     """:func:`study_site` of a row of the study's assessment table (US customary columns).
 
     Reads ``span_ft``, ``n_spans``, ``path``, ``k_mid_lbf_per_in`` and ``bridge_f1_hz``;
@@ -371,4 +395,5 @@ def assessment_site(row: object, skew_hand: str | None = None,
         row.bridge_f1_hz,
         skew_hand=skew_hand if span == 40 else None,
         damping_ratio=damping_ratio,
+        barriers=barriers,
     )
