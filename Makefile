@@ -11,7 +11,8 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-# MathJax, RequireJS and the ipywidgets HTML manager, installed from the npm registry at the
+# MathJax, RequireJS, the ipywidgets HTML manager and uPlot (the static explorers' plots),
+# installed from the npm registry at the
 # versions locked in book/assets/package-lock.json and copied into book/assets/static/vendor,
 # which Sphinx copies into the book's _static folder: the pages load nothing from a CDN.
 ASSETS_DIR := book/assets
@@ -35,7 +36,7 @@ $(ASSETS): $(ASSETS_DIR)/package.json $(ASSETS_DIR)/package-lock.json
 	@command -v npm >/dev/null || { echo "make: the book's browser assets need npm (Node.js 18 or newer); install it, e.g. apt-get install -y npm"; exit 1; }
 	npm ci --prefix $(ASSETS_DIR) --ignore-scripts --no-audit --no-fund --loglevel=error
 	rm -rf $(ASSETS_DIR)/static
-	mkdir -p $(VENDOR)/mathjax/output $(VENDOR)/html-manager
+	mkdir -p $(VENDOR)/mathjax/output $(VENDOR)/html-manager $(VENDOR)/uplot
 	cp -r $(NODE_MODULES)/mathjax/es5/tex-mml-chtml.js $(NODE_MODULES)/mathjax/es5/input \
 	    $(NODE_MODULES)/mathjax/es5/ui $(NODE_MODULES)/mathjax/es5/a11y \
 	    $(NODE_MODULES)/mathjax/es5/sre $(NODE_MODULES)/mathjax/es5/adaptors $(VENDOR)/mathjax/
@@ -46,6 +47,8 @@ $(ASSETS): $(ASSETS_DIR)/package.json $(ASSETS_DIR)/package-lock.json
 	    $(NODE_MODULES)/@jupyter-widgets/html-manager/dist/*.{woff,woff2,ttf,eot,svg} \
 	    $(NODE_MODULES)/@jupyter-widgets/html-manager/dist/embed.js.LICENSE.txt \
 	    $(VENDOR)/html-manager/
+	cp $(NODE_MODULES)/uplot/dist/uPlot.iife.min.js $(NODE_MODULES)/uplot/dist/uPlot.min.css \
+	    $(NODE_MODULES)/uplot/LICENSE $(VENDOR)/uplot/
 	touch $(ASSETS)
 
 assets: $(ASSETS)
@@ -59,11 +62,24 @@ test: setup assets
 	$(PY) -m pytest
 
 # Voila runs explore/explore.ipynb in a kernel and shows only its outputs; 127.0.0.1 only.
+# Every page load starts a kernel (some 450 MB) that Voila cannot shut down when the tab
+# closes (its shutdown request is refused, voila#1458), so kernels idle for EXPLORE_IDLE
+# seconds with no page connected are culled, checked every EXPLORE_CULL seconds; a page that
+# stays open keeps its kernel.  EXPLORE_OPTIONS passes more Voila options (they come last).
+# The vbi template (explore/share/jupyter/voila/templates/vbi) is Voila's lab template
+# without its links to a CDN: every asset is served by Voila itself.
 PORT ?= 8866
+EXPLORE_IDLE ?= 120
+EXPLORE_CULL ?= 30
+EXPLORE_OPTIONS ?=
 explore: setup
 	@echo "vbi explorers: http://127.0.0.1:$(PORT)/ (Ctrl-C stops the app)"
+	JUPYTER_PATH="$(CURDIR)/explore/share/jupyter$${JUPYTER_PATH:+:$$JUPYTER_PATH}" \
 	$(VENV)/bin/voila explore/explore.ipynb --no-browser --Voila.ip=127.0.0.1 \
-		--port=$(PORT) --Voila.port_retries=0
+		--port=$(PORT) --Voila.port_retries=0 --template=vbi \
+		--MappingKernelManager.cull_idle_timeout=$(EXPLORE_IDLE) \
+		--MappingKernelManager.cull_interval=$(EXPLORE_CULL) \
+		--MappingKernelManager.cull_connected=False $(EXPLORE_OPTIONS)
 
 # JupyterLab on 127.0.0.1 (it prints its URL with a token); LAB_OPTIONS adds options.
 # As root (a container) JupyterLab needs --allow-root.

@@ -1,6 +1,7 @@
 """How fast an explorer answers a slider (issue 15: one crossing <= 100 ms median, as seen).
 
-Run: ``.venv/bin/python benchmarks/bench_widgets.py``.  Three measurements of the crossing
+Run: ``.venv/bin/python benchmarks/bench_widgets.py`` (``--static``: the static book's
+explorers only).  Three measurements of the crossing
 explorer's update when the speed slider moves, from the inside out:
 
 1. in this process (the explorer's ``update``: one crossing, the lines' new data, one Agg
@@ -12,13 +13,24 @@ explorer's update when the speed slider moves, from the inside out:
    page with ``performance.now()``), so the browser's round trip and rendering count.
 
 The sweeps are timed in this process: a 36-speed sweep and a 13 x 15 frequency map.
+
+The static book's explorers (issue 25: within a frame, 16 ms, for the default crossing) are
+timed in Chromium on the built book (``_build/html``, ``make book``; ``VBI_BOOK_HTML`` names
+another build): from the key press on ``input[name=speed]`` to the end of the redraw (the
+explorer's ``vbi-drawn`` event: the port's crossing, uPlot's two plots and the readout; the
+recomputation waits for the next frame), and the work alone (the crossing and the redraw);
+and the port's crossing alone in Node.
 Prints medians after a warm-up (compiled code loads on first use).
 """
 
 from __future__ import annotations
 
+import functools
+import http.server
+import json
 import os
 import re
+import shutil
 import signal
 import socket
 import statistics
@@ -177,7 +189,117 @@ def in_browser() -> float | None:
         server.wait(timeout=30)
 
 
+STATIC_TIMER = """
+() => {
+  const root = document.querySelector('[data-vbi-explorer=crossing]');
+  const slider = root.querySelector('input[type=range][name=speed]');
+  window.vbiPress = { pressed: null, total: [], work: [] };
+  slider.addEventListener('keydown', () => { window.vbiPress.pressed = performance.now(); }, true);
+  root.addEventListener('vbi-drawn', (event) => {
+    const press = window.vbiPress;
+    if (press.pressed === null) return;
+    press.total.push(event.detail.drawn - press.pressed);
+    press.work.push(event.detail.compute + (event.detail.drawn - event.detail.computed));
+    press.pressed = null;
+  });
+}
+"""
+
+NODE_TIMER = """
+const m = require(process.argv[1]);
+const d = JSON.parse(process.argv[2]);
+for (const modes of [1, 10]) {
+  const { setting } = m.scenarioSetting({ ...d, modes });
+  for (let i = 0; i < 20; i++) m.simulate(setting);
+  const times = [];
+  for (let i = 0; i < 50; i++) {
+    const t = process.hrtime.bigint();
+    m.simulate(setting);
+    times.push(Number(process.hrtime.bigint() - t) / 1e6);
+  }
+  times.sort((a, b) => a - b);
+  console.log(JSON.stringify({ modes, ms: times[25] }));
+}
+"""
+
+
+def static_in_node() -> dict[int, float]:
+    """Median time of the port's default crossing in Node [ms], one-coordinate and 10 modes."""
+    node = shutil.which("node")
+    if node is None:
+        return {}
+    from dataclasses import asdict
+
+    from vbi_lib.widgets import Scenario
+
+    model = ROOT / "book" / "_static" / "vbi-explorers" / "vbi-model.js"
+    out = subprocess.run([node, "-e", NODE_TIMER, str(model), json.dumps(asdict(Scenario()))],
+                         capture_output=True, text=True, check=True)  # fmt: skip
+    return {row["modes"]: row["ms"] for row in map(json.loads, out.stdout.split())}
+
+
+def static_in_browser() -> tuple[float, float] | None:
+    """Median key press to redraw, and the work alone, of the static crossing explorer [s]."""
+    html = Path(os.environ.get("VBI_BOOK_HTML", ROOT / "_build" / "html"))
+    page_path = "notebooks/07-your-own-bridge.html"
+    if not CHROMIUM.exists() or not (html / page_path).is_file():
+        print(f"no {html / page_path} or no chromium: the static explorer is not timed (make book)")
+        return None
+    from playwright.sync_api import sync_playwright
+
+    class Quiet(http.server.SimpleHTTPRequestHandler):
+        def log_message(self, *args: object) -> None:
+            pass
+
+    server = http.server.ThreadingHTTPServer(
+        ("127.0.0.1", 0), functools.partial(Quiet, directory=str(html))
+    )
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    base = f"http://127.0.0.1:{server.server_address[1]}/"
+    try:
+        with sync_playwright() as playwright:
+            browser = playwright.chromium.launch(
+                executable_path=str(CHROMIUM), args=list(CHROMIUM_ARGS)
+            )
+            page = browser.new_page()
+            page.route("**/*", lambda r: r.continue_() if r.request.url.startswith(base)
+                       else r.abort("blockedbyclient"))  # fmt: skip
+            page.goto(base + page_path)
+            page.wait_for_function(
+                "window.vbiExplorers && window.vbiExplorers.every(e => e.result)", timeout=60_000
+            )
+            page.evaluate(STATIC_TIMER)
+            slider = page.locator("[data-vbi-explorer=crossing] input[type=range][name=speed]")
+            slider.focus()
+            for k in range(PRESSES + 1):
+                slider.press("ArrowRight" if k < PRESSES // 2 else "ArrowLeft")
+                page.wait_for_function(f"window.vbiPress.total.length >= {k + 1}", timeout=10_000)
+            times = page.evaluate("window.vbiPress")
+            browser.close()
+    finally:
+        server.shutdown()
+    return statistics.median(times["total"][1:]) / 1e3, statistics.median(times["work"][1:]) / 1e3
+
+
 if __name__ == "__main__":
+    static = static_in_browser()
+    node = static_in_node()
+    if static is not None:
+        total, work = static
+        report(
+            "static book's crossing explorer: speed slider key press to redraw in Chromium "
+            "(the work alone: port + uPlot + readout)",
+            "<= 16 ms (one frame)",
+            f"{total * 1e3:.1f} ms ({work * 1e3:.1f} ms)",
+        )
+    if node:
+        report(
+            "the page's port, one default crossing in Node: one-coordinate / 10 modes",
+            "-",
+            f"{node[1]:.2f} / {node[10]:.2f} ms",
+        )
+    if "--static" in sys.argv:  # the static book's explorers only
+        sys.exit(0)
     one, full, quarter, speed, frequency = in_process()
     print(
         f"crossing explorer, one slider move, in this process (Agg + PNG): {one * 1e3:.1f} ms "

@@ -217,7 +217,7 @@ def test_assessment_inputs_errors_name_the_row() -> None:
         profile="flat",
     )
     road = {"flat": vbi.Profile.flat(200.0, 0.0254)}
-    with pytest.raises(ValueError, match="beam='fe' must be 'study' or 'exact'"):
+    with pytest.raises(ValueError, match="beam='fe' must be 'study', 'exact' or 'deck'"):
         sd.assessment_inputs(pd.DataFrame([row]), road, beam="fe")
     with pytest.raises(ValueError, match="row 1: profile 'rough' is not among"):
         sd.assessment_inputs(pd.DataFrame([row, {**row, "profile": "rough"}]), road)

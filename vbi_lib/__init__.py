@@ -14,6 +14,7 @@ from . import (
     amplification,
     beam_statics,
     closed_forms,
+    decks,
     display,
     models,
     monitoring,
@@ -25,6 +26,7 @@ from . import (
     vehicles,
 )
 from .bridges import Bridge, reference_beam, shape_function_error
+from .decks import Deck
 from .models import (
     MODELS,
     BatchResult,
@@ -56,6 +58,7 @@ __all__ = [
     "Bridge",
     "ContactLossWarning",
     "Crossing",
+    "Deck",
     "ErdFile",
     "ModalCrossing",
     "OneCoordinateCrossing",
@@ -73,6 +76,7 @@ __all__ = [
     "beam_statics",
     "closed_forms",
     "contact_force_amplification",
+    "decks",
     "display",
     "fit_iso8608",
     "iri",

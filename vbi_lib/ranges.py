@@ -23,6 +23,7 @@ import warnings
 from dataclasses import dataclass
 
 from . import _validation as check
+from ._deck_ranges import DECK_RANGES
 from .validity import OutsideValidityWarning
 
 __all__ = [
@@ -431,6 +432,8 @@ RANGES: dict[str, Range] = {
         open_low=True,
     ),
 }
+#: The decks' inputs (:mod:`vbi_lib.decks`), kept in their own module for length.
+RANGES.update((key, Range(*spec[:7], **spec[7])) for key, spec in DECK_RANGES.items())
 
 
 def _caller_level() -> int:

@@ -44,6 +44,7 @@ import pandas as pd
 from . import units as u
 from ._files import read_text
 from .bridges import Bridge, reference_beam
+from .decks.study import StudyDeck, assessment_site
 from .profile_files import read_profile
 from .profiles import Profile
 from .vehicles import Vehicle
@@ -459,7 +460,9 @@ def assessment_inputs(
     profiles: dict[str, Profile],
     beam: str = "study",
     damping_ratio: float = 0.01,
-) -> tuple[list[Bridge], list[Vehicle], list[Profile]]:
+    *,
+    skew_hand: str | None = None,
+) -> tuple[list[Bridge] | list[StudyDeck], list[Vehicle], list[Profile]]:
     """Bridges, trucks and roads of a model-assessment table like the study's Chapter 13.
 
     Every parameter comes from the row: the span, number of spans, midspan stiffness of the
@@ -478,9 +481,15 @@ def assessment_inputs(
     beam
         ``"study"``: :meth:`Bridge.from_midspan_stiffness`, the one-coordinate model's rule
         (82)-(84); ``"exact"``: :func:`vbi_lib.bridges.reference_beam`, the beam whose exact
-        midspan stiffness is ``K_mid`` (the consistent choice for the many-mode model).
+        midspan stiffness is ``K_mid`` (the consistent choice for the many-mode model);
+        ``"deck"``: a :class:`vbi_lib.decks.study.StudyDeck` per row, the deck across its
+        width with the row's path and girder (:func:`vbi_lib.decks.study.assessment_site`;
+        the 140 ft rows keep the exact beam, and their notes say why).
     damping_ratio
         Bridge damping ratio (the study: 1 %).
+    skew_hand
+        ``beam="deck"`` only: ``None`` (the 40 ft decks square; the seed leaves the hand of
+        their 16 degree skew open), ``"left"`` or ``"right"``.
 
     Returns
     -------
@@ -490,9 +499,9 @@ def assessment_inputs(
     Raises
     ------
     ValueError
-        ``beam`` not ``"study"`` or ``"exact"``, a row naming a profile not given, or a row
-        whose numbers the :class:`Bridge` or :class:`Vehicle` refuses (the message names the
-        row).
+        ``beam`` not ``"study"``, ``"exact"`` or ``"deck"``, a row naming a profile not given,
+        or a row whose numbers the :class:`Bridge`, the deck or :class:`Vehicle` refuses (the
+        message names the row).
 
     Examples
     --------
@@ -505,23 +514,23 @@ def assessment_inputs(
     >>> round(b[0].first_frequency_hz, 2), round(v[0].frequency_hz, 2)
     (9.98, 10.55)
     """
-    if beam not in ("study", "exact"):
-        raise ValueError(f"beam={beam!r} must be 'study' or 'exact'")
-    make = Bridge.from_midspan_stiffness if beam == "study" else reference_beam
+    if beam not in ("study", "exact", "deck"):
+        raise ValueError(f"beam={beam!r} must be 'study', 'exact' or 'deck'")
+    if skew_hand is not None and beam != "deck":
+        raise ValueError(f"skew_hand={skew_hand!r} applies to beam='deck' only")
+    make = {"study": Bridge.from_midspan_stiffness, "exact": reference_beam}.get(beam)
+    if beam == "deck" and "path" not in getattr(table, "columns", ()):
+        raise ValueError("beam='deck' needs the table's 'path' column (the study's path)")
     bridges, vehicles, roads = [], [], []
     for i, row in enumerate(table.itertuples()):
         if row.profile not in profiles:
             raise ValueError(f"row {i}: profile {row.profile!r} is not among the roads given")
         try:
-            bridges.append(
-                make(
-                    row.span_ft * u.ft,
-                    int(row.n_spans),
-                    row.k_mid_lbf_per_in * u.lbf / u.inch,
-                    row.bridge_f1_hz,
-                    damping_ratio,
-                )
-            )
+            if beam == "deck":
+                bridges.append(assessment_site(row, skew_hand, damping_ratio))
+            else:
+                span, k_mid = row.span_ft * u.ft, row.k_mid_lbf_per_in * u.lbf / u.inch
+                bridges.append(make(span, int(row.n_spans), k_mid, row.bridge_f1_hz, damping_ratio))
             vehicles.append(
                 Vehicle(
                     row.vehicle_mass_slinch * u.slinch,

@@ -84,6 +84,10 @@ def test_a_mass_may_be_given_as_a_weight_and_si_spans_show_si() -> None:
          r"you mean '35 t' \(35 t\)\?"),
         ({"bridge.damping_ratio": 1.5}, r"bridge.damping_ratio=1.5 is outside"),
         ({"bridge.damping_ratio": "5 %"}, None),
+        ({"vehicle.damping_ratio": -0.1}, r"vehicle.damping_ratio=-0.1 must be at least 0 "
+         r"\(a damper cannot give energy back"),
+        ({"vehicle.damping_ratio": float("nan")}, r"vehicle.damping_ratio=nan must be a finite "
+         r"number"),
         # types
         ({"quick": "False"}, r"quick='False' must be a YAML boolean: true or false, unquoted"),
         ({"vehicle.damped": 1}, r"vehicle.damped=1 must be a YAML boolean"),
@@ -122,6 +126,19 @@ def test_bad_parameters_are_refused_by_key(changes: dict, message: str | None) -
         return
     with pytest.raises(ParameterError, match=message):
         read_parameters(base(**changes))
+
+
+@pytest.mark.parametrize("ratio", [0.6, 1.0, 2.09, "209 %"])
+def test_an_overdamped_suspension_is_taken_and_warned_of(ratio: object) -> None:
+    """h20's rule: a suspension damped above the intended 50 % (at or above critical: it
+    creeps back without vibrating) is a valid truck, run and warned of, never refused."""
+    p = read_parameters(base(**{"vehicle.damping_ratio": ratio}))
+    expected = 2.09 if ratio == "209 %" else ratio
+    assert p.vehicle.damping_ratio == pytest.approx(expected, rel=1e-12)
+    (warning,) = p.warnings
+    assert warning.startswith(f"vehicle.damping_ratio={ratio!r} is outside the intended range")
+    assert "overdamped" in warning
+    assert not read_parameters(base(**{"vehicle.damping_ratio": 0.5})).warnings
 
 
 def test_profile_file_keys(tmp_path: Path) -> None:

@@ -170,7 +170,7 @@ def test_a_value_beyond_a_slider_is_clamped_and_said_so() -> None:
     explorer.controls["span_ft"].value = 900.0
     assert explorer.controls["span_ft"].value == 250.0
     assert explorer.result.bridge.span == pytest.approx(250 * u.ft)
-    assert "span_ft=900 is outside the control's range" in explorer.notice.value
+    assert "span_ft=900 ft is outside the control's range 20 to 250 ft" in explorer.notice.value
     explorer.controls["speed_mph"].value = 30.0  # the next change clears the note
     assert explorer.notice.value == ""
 
@@ -187,7 +187,10 @@ def test_settings_without_a_valid_crossing_show_why_and_no_number(tmp_path: Path
     short.write_text("0,0\n100,0.1\n200,0\n")  # 200 in: shorter than the approach
     explorer.controls["profile_path"].value = str(short)
     assert explorer.result is None
-    assert "does not cover the approach and the bridge" in explorer.readout.value
+    # said in the explorer's units, naming its controls (not the library's bridge_start)
+    text = explorer.readout.value
+    assert "runs 16.7 ft" in text and "the bridge ends 420.0 ft from its start" in text
+    assert "approach_ft=320" in text and "span_ft=100" in text and "bridge_start" not in text
 
     broken = tmp_path / "broken.csv"
     broken.write_text("0,0\n1,x\n")
@@ -217,7 +220,7 @@ def test_an_uploaded_profile_is_read_and_driven(files: dict[str, str]) -> None:
 
 def test_only_the_chosen_roads_controls_are_shown() -> None:
     explorer = CrossingExplorer(road="harmonic")
-    shown = {k for k, c in explorer.controls.items() if c.layout.display != "none"}
+    shown = {k for k, c in explorer.controls.items() if c.box.layout.display != "none"}
     assert {"wavelength_ft", "amplitude_in", "road_shift_ft"} <= shown
     assert not {"iso_class", "bump_height_in", "profile_path"} & shown
     explorer.controls["road"].value = "measured"

@@ -141,7 +141,7 @@ def test_the_quarter_cars_sliders_show_only_when_it_is_chosen() -> None:
     explorer = CrossingExplorer()
 
     def shown(name: str) -> bool:
-        return explorer.controls[name].layout.display != "none"
+        return explorer.controls[name].box.layout.display != "none"
 
     assert not shown("axle_hop_hz") and not shown("unsprung_fraction")
     explorer.controls["vehicle_type"].value = "quarter-car"

@@ -115,8 +115,9 @@ SCHEMA: dict[str, Any] = {
         "frequency": Key("frequency", "body-bounce frequency (trucks: 3 Hz)",
                          "vehicle_frequency"),
         "tyre_stiffness": Key("stiffness", "tyre stiffness of a quarter car (all its tyres)"),
-        "damping_ratio": Key("ratio", "fraction of critical damping of the suspension",
-                             "vehicle_damping_ratio", 0.10),
+        "damping_ratio": Key("ratio", "fraction of critical damping of the suspension (1 or "
+                             "more: overdamped, warned of)", "vehicle_damping_ratio", 0.10,
+                             warn=True),
         "damped": Key("bool", "true when frequency is the damped frequency", default=False),
         "footprint": Key("length", "tyre contact length (default 0.25 m)", "footprint"),
         "rear_axle_spacing": Key("spacing", "rear axle spacing of the design truck, 14 to 30 "

@@ -224,7 +224,9 @@ def _quantity(
     return si
 
 
-def _ratio(name: str, key: Key, value: object, given: dict[str, str]) -> float:
+def _ratio(
+    name: str, key: Key, value: object, given: dict[str, str], warnings: list[str] | None = None
+) -> float:
     if isinstance(value, str):
         try:
             number = u.read_quantity(value, "dimensionless", name=name).si
@@ -234,12 +236,21 @@ def _ratio(name: str, key: Key, value: object, given: dict[str, str]) -> float:
         number = float(value)
     else:
         raise ParameterError(name, value, "must be a number such as 0.05, or text such as '5 %'")
+    if not math.isfinite(number):
+        raise ParameterError(name, value, "must be a finite number such as 0.05, or '5 %'")
     low, high = key.bounds
-    if not (math.isfinite(number) and low <= number <= high):
-        raise ParameterError(
-            name, value, f"is outside the intended range {low:g} to {high:g} ({low:.0%} to "
+    if not low <= number <= high:
+        rule = (
+            f"is outside the intended range {low:g} to {high:g} ({low:.0%} to "
             f"{high:.0%} of critical damping; vbi_lib.ranges.RANGES[{key.range!r}])"
-        )  # fmt: skip
+        )
+        spec = RANGES[key.range]
+        hard_low, hard_high = spec.hard
+        if not (key.warn and warnings is not None and hard_low <= number <= hard_high):
+            if key.warn:
+                rule = f"must be {spec.hard_text()} ({spec.reason})"
+            raise ParameterError(name, value, rule)
+        warnings.append(f"{name}={value!r} {rule}: {spec.intended}; {spec.reason}.")
     given[name] = f"{number:g} ({number * 100:g} %)"
     return number
 
@@ -407,7 +418,7 @@ def _value(section: str, name: str, values: dict, schema: dict[str, Key], **cont
         "bool": lambda: _boolean(full, value),
         "choice": lambda: _choice(full, key, value),
         "text": lambda: _text(full, value),
-        "ratio": lambda: _ratio(full, key, value, given),
+        "ratio": lambda: _ratio(full, key, value, given, context.get("warnings")),
         "length_unit": lambda: _length_unit(full, value),
         "path": lambda: _path(full, value, context["base_dir"]),
         "speeds": lambda: _speeds(full, key, value, given),

@@ -12,6 +12,10 @@ parameter each sets) and ``.result`` (the last computation, for checking without
   a heat map (:class:`FrequencyMap`).
 
 :class:`ExplorerApp` puts the three in tabs (the app ``make explore`` serves with Voila).
+In the static book the same explorers run in the reader's browser, on a JavaScript port of the
+models (:mod:`vbi_lib.widgets.page`); :func:`live_and_static` shows a live explorer where a
+kernel runs it and its static twin in the book.  Every explorer writes its setting as a report
+parameter file (:mod:`vbi_lib.widgets.report_file`).
 Controls are in the study's US customary units; readouts and plots follow
 :mod:`vbi_lib.display`.  The controls describe a :class:`Scenario`:
 
@@ -27,6 +31,7 @@ import ipywidgets as w
 from .controls import ControlValueError
 from .crossing import CrossingExplorer
 from .frequency import FrequencyExplorer, FrequencyMap
+from .page import PageExplorer, live_and_static
 from .scenario import ROADS, Scenario
 from .speed import SpeedExplorer
 
@@ -37,8 +42,10 @@ __all__ = [
     "ExplorerApp",
     "FrequencyExplorer",
     "FrequencyMap",
+    "PageExplorer",
     "Scenario",
     "SpeedExplorer",
+    "live_and_static",
 ]
 
 

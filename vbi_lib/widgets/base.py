@@ -6,11 +6,15 @@ readout says why and shows no number, ``result`` becomes ``None`` and the figure
 so what is on the page always matches the controls.  A value a control refuses or clamps is
 explained on the note line (see :mod:`vbi_lib.widgets.controls`), and so is an input the
 model accepts but was not made for (an :class:`~vbi_lib.OutsideValidityWarning`: a speed
-above 150 km/h, an ISO class beyond E).
+above 150 km/h, an ISO class beyond E), and so is how the road was completed (a measured deck
+one or two samples short of the far support).  **Reset** puts every control back to the value
+the explorer started with.
 """
 
 from __future__ import annotations
 
+import base64
+import html
 import tempfile
 import warnings
 from pathlib import Path
@@ -22,6 +26,7 @@ from ..validity import OutsideValidityWarning
 from .controls import ROAD_PARAMETERS, VEHICLE_PARAMETERS, make_controls
 from .figure import FigureImage
 from .readouts import error_html, notice_html
+from .report_file import ReportFiles, report_files, write_report_files
 from .scenario import Scenario
 
 __all__ = ["Explorer"]
@@ -83,6 +88,8 @@ class Explorer:
     """
 
     parameters: ClassVar[tuple[str, ...]] = ()
+    #: What the explorer shows, in file names: ``crossing``, ``speed`` or ``frequency``.
+    kind: ClassVar[str] = "explorer"
     #: Start values that differ from :class:`Scenario`'s for this explorer.
     defaults: ClassVar[dict[str, Any]] = {}
     figure_size: ClassVar[tuple[float, float]] = (7.2, 4.6)
@@ -100,6 +107,21 @@ class Explorer:
         self._outside_said = False  # the note line shows inputs outside their ranges
         #: The last result's inputs outside their intended ranges, one sentence each.
         self.outside_inputs: list[str] = []
+        #: The values the explorer started with (what **Reset** goes back to).
+        self.start_values = self.values()
+        self.reset_button = w.Button(
+            description="Reset", tooltip="Put every control back to its start value"
+        )
+        self.reset_button.add_class("vbi-reset")
+        self.reset_button.on_click(lambda _button: self.reset())
+        self.report_button = w.Button(
+            description="Report parameters",
+            tooltip="Write this setting as a parameter file that vbi-report accepts",
+        )
+        self.report_button.add_class("vbi-report")
+        self.report_button.on_click(lambda _button: self._offer_report_files())
+        #: Links to download the last report parameter files (data: URLs, no server needed).
+        self.report_links = w.HTML()
         self._uploads = tempfile.TemporaryDirectory(prefix="vbi-profiles-")
         self.upload = w.FileUpload(
             accept=".csv,.txt,.dat,.prn", multiple=False, description="upload profile"
@@ -139,6 +161,55 @@ class Explorer:
     def values(self) -> dict[str, Any]:
         """The controls' current values, by parameter."""
         return {name: control.value for name, control in self.controls.items()}
+
+    def report_files(self, name: str | None = None) -> ReportFiles:
+        """The current setting as a report parameter file ``vbi-report`` accepts as it is.
+
+        See :mod:`vbi_lib.widgets.report_file`: today's report keys; a road the report cannot
+        generate is written as the deck profile beside it.  ``name`` is the file's name
+        without ``.yaml`` (default ``vbi-<kind>``).
+
+        Raises
+        ------
+        ValueError
+            Controls that describe no crossing, or a setting the report cannot take (the
+            message names the control to change).
+        """
+        values, speeds = self._report_setting()
+        scenario = Scenario(**{k: v for k, v in values.items() if k in _SCENARIO_FIELDS})
+        road = None
+        if not (scenario.road == "iso-class" and scenario.road_shift_ft == 0):
+            profile = scenario.profile()
+            road = (profile, scenario.bridge_start(profile))
+        return report_files(values, speeds, road, name or f"vbi-{self.kind}")
+
+    def write_report_parameters(self, folder: str | Path, name: str | None = None) -> list[Path]:
+        """Write :meth:`report_files` into ``folder``; returns the paths (parameters first)."""
+        return write_report_files(self.report_files(name), folder)
+
+    def _report_setting(self) -> tuple[dict[str, Any], list[float]]:
+        """The values and speeds [mph] the report parameter file describes."""
+        values = self.values()
+        return values, [values["speed_mph"]]
+
+    def _offer_report_files(self) -> None:
+        try:
+            files = self.report_files()
+        except (ValueError, TypeError) as exc:
+            self.report_links.value = notice_html(str(exc))
+            return
+        links = " ".join(
+            f'<a download="{html.escape(f.name)}" href="data:text/plain;charset=utf-8;base64,'
+            f'{base64.b64encode(f.text.encode()).decode()}">{html.escape(f.name)}</a>'
+            for f in files.files
+        )
+        self.report_links.value = (
+            f'<div class="vbi-report-files">Download {links}. {html.escape(files.note)}</div>'
+        )
+
+    def reset(self) -> Any:
+        """Every control back to its start value, one recomputation; returns :attr:`result`."""
+        return self.set(**self.start_values)
 
     def scenario(self) -> Scenario:
         """The :class:`Scenario` of the controls (fields without a control keep the default).
@@ -197,7 +268,7 @@ class Explorer:
             else:  # not ours to handle: pass it on
                 warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
         self.outside_inputs = outside
-        self._say_outside(outside)
+        self._say_outside(outside, self._road_notes())
         self._show(result)
         return result
 
@@ -207,10 +278,19 @@ class Explorer:
         self._fresh_notice = True
         self._control_note = message
 
-    def _say_outside(self, outside: list[str]) -> None:
-        """Put the inputs outside their intended ranges on the note line, after any sentence
-        a control said in this change; take them away when the inputs are back inside."""
+    def _road_notes(self) -> list[str]:
+        """How the road was completed (a measured deck a sample or two short), for the notes."""
+        try:
+            return self.scenario().road_notes()
+        except (ValueError, TypeError):
+            return []
+
+    def _say_outside(self, outside: list[str], notes: list[str] | None = None) -> None:
+        """Put the inputs outside their intended ranges (and the road's notes) on the note
+        line, after any sentence a control said in this change; take them away when the
+        inputs are back inside."""
         control, self._control_note = self._control_note, None
+        outside = [*outside, *(notes or [])]
         if outside:
             sentences = ([control] if control else []) + list(dict.fromkeys(outside))
             self.notice.value = notice_html(" ".join(_sentence(s) for s in sentences))
@@ -250,20 +330,20 @@ class Explorer:
             used = set(groups[self.controls[key].value])
             for name in {p for group in groups.values() for p in group}:
                 if name in self.controls:
-                    self.controls[name].layout.display = "" if name in used else "none"
+                    self.controls[name].box.layout.display = "" if name in used else "none"
             if key == "road":
                 self.upload.layout.display = "" if "profile_path" in used else "none"
 
     def _panel(self) -> w.VBox:
-        rows: list[Any] = []
+        rows: list[Any] = [w.HBox([self.reset_button, self.report_button]), self.report_links]
         for title, names in SECTIONS.items():
-            present = [self.controls[n] for n in names if n in self.controls]
+            present = [self.controls[n].box for n in names if n in self.controls]
             if not present:
                 continue
             rows.append(w.HTML(f"<b>{title}</b>"))
             rows.extend(present)
             if title == "Road" and "profile_path" in self.controls:
-                rows.insert(rows.index(self.controls["profile_path"]) + 1, self.upload)
+                rows.insert(rows.index(self.controls["profile_path"].box) + 1, self.upload)
         return w.VBox(rows, layout=w.Layout(min_width="28em"))
 
 

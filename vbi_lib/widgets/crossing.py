@@ -55,6 +55,7 @@ class CrossingExplorer(Explorer):
     """
 
     parameters = tuple(Scenario.__dataclass_fields__)
+    kind = "crossing"
 
     def _setup_figure(self) -> None:
         self.axes = self.view.figure.subplots(2, 1, sharex=True)

@@ -190,8 +190,24 @@ class FrequencyExplorer(Explorer):
         p for p in Scenario.__dataclass_fields__ if p not in ("speed_mph", "truck_frequency_hz")
     ) + ("ratio_range", "n_ratios", "speed_range_mph", "n_speeds")
     defaults = {"road": "harmonic", "n_speeds": 15, "speed_range_mph": (20.0, 90.0)}
+    kind = "frequency"
     #: Seconds between two progressive redraws of the map.
     render_interval = 0.25
+
+    def _report_setting(self) -> tuple[dict, list[float]]:
+        """The map's cell of the largest DAF that kept contact (else its first): its truck
+        frequency and speed."""
+        values = dict(self.values())
+        ratio, speed = self.grid()
+        row, col = 0, 0
+        result = self.result
+        if result is not None:
+            largest = np.where(result.lost_contact, np.nan, result.largest_daf)
+            if np.isfinite(largest).any():
+                row, col = np.unravel_index(np.nanargmax(largest), largest.shape)
+        values["truck_frequency_hz"] = round(float(ratio[col] * values["bridge_frequency_hz"]), 6)
+        values["speed_mph"] = round(float(speed[row] / u.mph), 6)
+        return values, [values["speed_mph"]]
 
     def grid(self) -> tuple[np.ndarray, np.ndarray]:
         """The frequency ratios and the speeds [m/s] of the map."""

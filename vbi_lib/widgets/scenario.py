@@ -213,7 +213,9 @@ class Scenario:
         for name in _POSITIVE:
             check.positive(name, getattr(self, name))
         check.damping_ratio("bridge_damping", self.bridge_damping)
-        check.damping_ratio("truck_damping", self.truck_damping)
+        # 1 or more is an overdamped suspension: taken (the vehicle warns above the intended
+        # range, and the explorers put that on their note line), never refused
+        check_range("vehicle_damping_ratio", self.truck_damping, "truck_damping", warn=False)
         check.n_spans(self.n_spans)
         if self.vehicle_type not in VEHICLE_TYPES:
             raise ValueError(
@@ -332,12 +334,26 @@ class Scenario:
     def profile(self) -> Profile:
         """The road the truck drives on, after the position shift (stations in metres).
 
+        A measured profile that ends one or two samples short of the bridge's far support
+        (the study's I-76 deck files end 23 mm short of their 140 ft) is completed by holding
+        its last elevation, as the report does (:meth:`road_notes` says so).
+
         Raises
         ------
         ValueError
-            No file for a measured road, a file that cannot be read, or a shift longer than
-            the road.
+            No file for a measured road, a file that cannot be read, a shift longer than the
+            road, or a measured road that does not reach the bridge's far support (the
+            message names the controls: ``approach_ft``, ``span_ft``, ``n_spans``).
         """
+        return self._completed(self._shifted_road())[0]
+
+    def road_notes(self) -> list[str]:
+        """Sentences on how the road was completed (a measured deck a sample or two short)."""
+        if self.road != "measured":
+            return []
+        return self._completed(self._shifted_road())[1]
+
+    def _shifted_road(self) -> Profile:
         base = self._base_road()
         shift = self.road_shift_ft * u.ft
         if shift == 0.0:
@@ -349,6 +365,36 @@ class Scenario:
             )
         # slide the road back: station x now carries the elevation the road had at x + shift
         return base.segment(base.start + shift, base.end).shifted(-shift)
+
+    def _completed(self, road: Profile) -> tuple[Profile, list[str]]:
+        """A measured road held level to the far support if it stops a sample or two short."""
+        if self.road != "measured":
+            return road, []
+        from ..reports.deck import SHORT_SAMPLES  # the report's rule, shared
+
+        end = road.start + (self.approach_ft + self.n_spans * self.span_ft) * u.ft
+        short = end - road.end
+        if short <= 1e-9 * max(1.0, abs(end)):
+            return road, []
+        spacing = road.spacing
+        if short <= SHORT_SAMPLES * spacing + 1e-9:
+            completed = Profile(
+                np.append(road.x, end), np.append(road.elevation, road.elevation[-1]), road.name
+            )
+            return completed, [
+                f"The measured profile ends {short * 1e3:.0f} mm ({short / u.inch:.2f} in) "
+                f"before the bridge's far support, less than {SHORT_SAMPLES} samples: its last "
+                "elevation is held over that length, as the report does."
+            ]
+        shifted = f" after road_shift_ft={self.road_shift_ft:g}" if self.road_shift_ft else ""
+        raise ValueError(
+            f"the measured profile ({Path(self.profile_path).name}, profile_unit="
+            f"{self.profile_unit!r}) runs {(road.end - road.start) / u.ft:.1f} ft{shifted}, but "
+            f"the bridge ends {(end - road.start) / u.ft:.1f} ft from its start (approach_ft="
+            f"{self.approach_ft:g} + n_spans={self.n_spans} x span_ft={self.span_ft:g}): lower "
+            "approach_ft (a deck profile that starts at the first support needs approach_ft=0) "
+            "or span_ft, check profile_unit, or use a longer profile"
+        )
 
     def bridge_start(self, profile: Profile) -> float:
         """Station of the first support on ``profile`` [m]: ``approach_ft`` after its start."""

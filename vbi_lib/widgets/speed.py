@@ -55,8 +55,24 @@ class SpeedExplorer(Explorer):
         "n_speeds",
     )
     defaults = {"road": "harmonic"}
+    kind = "speed"
     #: Seconds between two progressive redraws of a long sweep.
     render_interval = 0.25
+
+    def _report_setting(self) -> tuple[dict, list[float]]:
+        """The sweep's lowest and highest speeds, and that of its largest DAF with contact."""
+        values = dict(self.values())
+        low, high = values.pop("speed_range_mph")
+        speeds = [low, high]
+        result = self.result
+        if result is not None:
+            daf = largest_daf(result.daf)
+            kept = np.isfinite(daf) & ~result.lost_contact
+            if kept.any():
+                best = int(np.flatnonzero(kept)[np.argmax(daf[kept])])
+                speeds.append(round(float(result.speed[best] / u.mph), 6))
+        values["speed_mph"] = speeds[-1]
+        return values, speeds
 
     def speeds(self) -> np.ndarray:
         """The speeds of the sweep [m/s]."""

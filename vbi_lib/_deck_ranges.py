@@ -1,0 +1,145 @@
+"""The ranges of validity of the inputs of a deck (:mod:`vbi_lib.decks`), read into RANGES.
+
+Each entry is ``(quantity, unit, hard, soft, reason, intended, used_by, options)``: the
+fields of :class:`vbi_lib.ranges.Range`, which reads them into the one table of ranges.
+"""
+
+from __future__ import annotations
+
+DECK_RANGES: dict[str, tuple] = {
+    "deck_width": (
+        "width of a deck across its girders, edge to edge",
+        "m",
+        (0.1, 200.0),
+        (2.0, 60.0),
+        "a deck under 10 cm wide is a plank; one over 200 m is no single deck",
+        "a footbridge to a ten-lane deck; wider decks are several structures",
+        "Deck, Deck.plate",
+        {},
+    ),
+    "slab_thickness": (
+        "thickness of a deck slab",
+        "m",
+        (0.001, 5.0),
+        (0.1, 1.5),
+        "under 1 mm there is no slab; over 5 m it is no plate",
+        "road deck slabs are 0.15 to 0.3 m and solid slab bridges up to about 1.2 m; thin "
+        "plate theory (Kirchhoff) holds while the slab is thin against its spans",
+        "Deck, Deck.plate",
+        {},
+    ),
+    "youngs_modulus": (
+        "Young's modulus of a deck's material",
+        "Pa",
+        (1e5, 1e13),
+        (1e9, 3e11),
+        "from a soft rubber to far beyond any structural material",
+        "timber 10 GPa, concrete 25 to 45 GPa, steel 200 GPa",
+        "Deck, Deck.plate, GirderSection",
+        {},
+    ),
+    "poisson": (
+        "Poisson's ratio of a deck slab",
+        "-",
+        (0.0, 0.5),
+        (0.0, 0.35),
+        "an isotropic solid has a ratio below 0.5; materials of negative ratio are no slabs",
+        "concrete 0.15 to 0.2, steel 0.3",
+        "Deck, Deck.plate",
+        {"open_high": True},
+    ),
+    "material_density": (
+        "density of a deck's material",
+        "kg/m^3",
+        (1.0, 3e4),
+        (300.0, 8000.0),
+        "lighter than a foam or denser than any metal is no structural material",
+        "timber 500, concrete 2400, steel 7850 kg/m^3",
+        "Deck, Deck.plate, GirderSection",
+        {},
+    ),
+    "girder_count": (
+        "number of girders under a deck",
+        "-",
+        (1, 100),
+        None,
+        "a hundred girders under one deck is a plate: model it as one",
+        "",
+        "Girders",
+        {},
+    ),
+    "girder_spacing": (
+        "distance between the axes of neighbouring girders",
+        "m",
+        (0.05, 50.0),
+        (0.5, 5.0),
+        "girders closer than 5 cm are one member; 50 m apart, no slab spans between them",
+        "slab-on-girder decks space their girders 1 to 4 m apart",
+        "Girders",
+        {},
+    ),
+    "overhang": (
+        "distance from a deck's edge to its first girder",
+        "m",
+        (0.0, 50.0),
+        (0.0, 3.0),
+        "an overhang longer than 50 m is no deck",
+        "cantilevered slabs of road decks reach about 1 to 2 m",
+        "Deck",
+        {},
+    ),
+    "skew": (
+        "skew of a deck: the angle between its support lines and the normal to its girders",
+        "deg",
+        (0.0, 60.0),
+        (0.0, 30.0),
+        "at 60 degrees or more the deck's obtuse corners take over its response and the "
+        "Ritz basis converges too slowly to be trusted",
+        "up to 30 degrees the default Ritz basis converges within 0.5 % (tests/decks); most "
+        "road bridges are skewed less",
+        "Deck, Deck.plate",
+        {"open_high": True},
+    ),
+    "member_EI": (
+        "flexural rigidity of a line member of a deck (a girder's share, an edge beam, a "
+        "diaphragm)",
+        "N m^2",
+        (0.0, 1e18),
+        None,
+        "from none to a hundred times the stiffest box girder",
+        "",
+        "Girders, EdgeBeam, Diaphragms",
+        {},
+    ),
+    "torsional_rigidity": (
+        "torsional rigidity GJ of a line member of a deck",
+        "N m^2",
+        (0.0, 1e18),
+        None,
+        "from none to far beyond any girder",
+        "",
+        "Girders, EdgeBeam, GirderSection",
+        {},
+    ),
+    "line_mass": (
+        "mass per length of a line member of a deck (a girder, an edge beam, a diaphragm)",
+        "kg/m",
+        (0.0, 1e6),
+        None,
+        "from none to ten times the heaviest deck",
+        "",
+        "Girders, EdgeBeam, Diaphragms, GirderSection",
+        {},
+    ),
+    "ritz_functions": (
+        "number of Ritz functions of a deck along its girders (per span) or across them",
+        "-",
+        (1, 100),
+        None,
+        "more than 100 functions a direction only cost time: the defaults converge with 12 "
+        "per span along and 30 across",
+        "",
+        "Deck (resolution)",
+        {},
+    ),
+}
