@@ -360,11 +360,14 @@ def _compare(label: str, crossing: vbi.Crossing, got: dict, run: dict) -> list[s
         ("truck displacement", _array(run, got["vehicle_displacement"]),
          crossing.vehicle_displacement, None),
     ]  # fmt: skip
-    midspans = got["series_midspan"] if crossing.model == "modal" else got["midspan"]
-    for j, where in enumerate(midspans):
+    for j, where in enumerate(got["midspan"]):  # the headline: what the span DAFs read
         histories.append(
             (f"midspan {j + 1}", _array(run, where), crossing.midspan_displacement[:, j], None)
         )
+    if crossing.model == "modal":  # and the modes' series
+        for j, where in enumerate(got["series_midspan"]):
+            series = crossing.series_midspan_displacement[:, j]
+            histories.append((f"series midspan {j + 1}", _array(run, where), series, None))
     for name, mine, theirs, size in histories:
         size = size or max(float(np.abs(theirs).max()), 1e-300)
         error = float(np.abs(mine - theirs).max())
@@ -390,8 +393,11 @@ def _compare(label: str, crossing: vbi.Crossing, got: dict, run: dict) -> list[s
         for j in range(bridge.n_spans):
             if not _close(got["series"]["peak"][j], ref["series_peak"][j]):
                 out.append(f"{label}: span {j + 1} series peak differs")
-    if bridge.n_spans == 1:  # the library's window today is the whole run too
-        today = got["daf"][0] if crossing.model == "one-coordinate" else got["series"]["daf"][0]
-        if not _close(today, float(crossing.daf[0])):
-            out.append(f"{label}: DAF {today} != the library's {crossing.daf[0]}")
+    # and the library's own DAFs, which follow the same definition
+    for j in range(bridge.n_spans):
+        if not _close(got["daf"][j], float(crossing.daf[j])):
+            out.append(f"{label}: span {j + 1} DAF {got['daf'][j]} != {crossing.daf[j]}")
+        if crossing.model == "modal" and not _close(got["series"]["daf"][j],
+                                                    float(crossing.series_daf[j])):  # fmt: skip
+            out.append(f"{label}: span {j + 1} series DAF differs from the library's")
     return out

@@ -9,9 +9,9 @@ message (the display keeps the controls' value), percent boxes taking percent, t
 contact said in words, the link (the URL's hash) carrying the setting, the reset button, and
 the report parameter file that vbi-report takes.
 
-The DAF compared is the issue 20 definition's (whole run, each span over its own static; the
-modal model by mode acceleration), built from the library's histories in
-``test_js_port.reference_spans`` until the core adopts it; then ``crossing.daf`` replaces it.
+The DAF compared is the library's ``crossing.daf`` (whole run, each span over its own static;
+the modal model by mode acceleration), which ``test_js_port`` also checks against a reference
+built in the test from the library's histories.
 """
 
 from __future__ import annotations
@@ -28,7 +28,6 @@ import pytest
 import test_book_browser as book_browser
 import yaml
 from conftest import BookBuild
-from test_js_port import reference_spans
 
 import vbi_lib as vbi
 from vbi_lib import units as u
@@ -58,7 +57,7 @@ def library_crossing(settings: dict[str, Any]) -> vbi.Crossing:
 
 
 def expected_dafs(settings: dict[str, Any]) -> list[float]:
-    return reference_spans(library_crossing(settings))["daf"]
+    return [float(d) for d in library_crossing(settings).daf]
 
 
 def _browser_or_skip() -> None:
