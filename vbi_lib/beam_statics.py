@@ -8,11 +8,11 @@ The point-load statics (the three-moment equation, both faces of the shear) are
 **Static envelope** (:func:`static_envelope`).  A group of axles (loads :math:`P_i` at
 :math:`o_i` behind the first) crawls over the bridge; at each section the largest and
 smallest value of each effect over the positions :math:`p` of the group,
-:math:`R(p) = \sum_i P_i\, \eta(x, p - o_i)` with :math:`\eta` the influence line, is found
+:math:`Q(p) = \sum_i P_i\, \eta(x, p - o_i)` with :math:`\eta` the influence line, is found
 exactly.  Every influence line of a uniform continuous beam is a cubic polynomial of the
 load's position between its kinks (the supports and the section itself: the support moments
 carry :math:`a b (L + a)`, the simple span's :math:`M_0, V_0, w_0` are at most cubic on
-either side of the section), so :math:`R` is a cubic between the positions where an axle is
+either side of the section), so :math:`Q` is a cubic between the positions where an axle is
 over a support or over the section.  Each of those pieces is fitted exactly from four
 interior values, and its extremes are its end limits and the roots of its derivative: no
 search, no grid, and the supremum at a jump of the shear (an axle just passing the section)

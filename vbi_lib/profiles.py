@@ -34,8 +34,8 @@ import scipy.fft
 
 from . import _validation as check
 from . import display
+from ._road_marks import inherit, mark_checked
 from .ranges import MAX_SAMPLES, RANGES, check_range
-from .road_checks import inherit, mark_checked
 
 #: ISO 8608 road classes and the geometric mean of ``G_d(n0)`` of each [m^3].
 ISO_CLASS_MEANS = {letter: 16e-6 * 4.0**i for i, letter in enumerate("ABCDEFGH")}

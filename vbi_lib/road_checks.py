@@ -40,6 +40,7 @@ from typing import Any
 
 import numpy as np
 
+from ._road_marks import _NOTES, _WARNED, _store, inherit, mark_checked
 from .ranges import RANGES, warn_outside
 
 __all__ = [
@@ -76,30 +77,6 @@ _SLIPS = (
     (12.0, "inches read as feet", "in"),
     (10.0, "millimetres read as centimetres", "mm"),
 )
-
-_NOTES = "_road_notes"
-_WARNED = "_road_warned"
-
-
-def _store(profile: Any, key: str, value: Any) -> None:
-    object.__setattr__(profile, key, value)  # a frozen Profile: not a field, it pickles along
-
-
-def mark_checked(profile: Any, notes: tuple[str, ...] = ()) -> Any:
-    """Record ``profile``'s verdict (``()``: plausible; a generator's road); returns it."""
-    _store(profile, _NOTES, tuple(notes))
-    return profile
-
-
-def inherit(source: Any, derived: Any) -> Any:
-    """Give ``derived`` (a segment, a shifted or resampled copy) ``source``'s verdict, if it
-    has one (a road cut from a plausible road is plausible); returns ``derived``."""
-    notes = source.__dict__.get(_NOTES)
-    if notes is not None:
-        _store(derived, _NOTES, notes)
-        if source.__dict__.get(_WARNED):
-            _store(derived, _WARNED, True)
-    return derived
 
 
 def _moving_average(x: np.ndarray, z: np.ndarray, base: float, at: np.ndarray) -> np.ndarray:

@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 
 import vbi_lib as vbi
-from vbi_lib.reports.inputs import approach_length, prepare
+from vbi_lib.reports.approach import approach_length
+from vbi_lib.reports.inputs import prepare
 from vbi_lib.reports.parameters import ParameterError, read_parameters
 
 FT, INCH, MPH = 0.3048, 0.0254, 0.44704
@@ -141,7 +142,7 @@ def test_the_approach_of_an_overdamped_suspension_waits_for_its_slow_root(zeta: 
     (5750 kg bouncing at 2.65 Hz)."""
     from scipy.linalg import expm
 
-    from vbi_lib.reports.inputs import DECAY
+    from vbi_lib.reports.approach import DECAY
 
     m, omega = 5750.0, 2 * math.pi * 2.65
     k, c = m * omega**2, 2 * zeta * m * omega

@@ -25,7 +25,7 @@ data):
   :math:`G(r, s)` under a unit axle load at ``s``, and the residual
   :math:`G(r, s) - \sum_n \phi_n(r)\bar\phi_n(s)/\omega_n^2`, so that the displacement at
   :math:`r` (positive down) is
-  :math:`u_r = -\sum_n \phi_n(r) q_n + \sum_a R_a\,[G - \sum_n\phi_n\bar\phi_n/\omega_n^2]`.
+  :math:`u_r = -\sum_n \phi_n(r) q_n + \sum_a F_{c,a}\,[G - \sum_n\phi_n\bar\phi_n/\omega_n^2]`.
 """
 
 from __future__ import annotations

@@ -4,10 +4,11 @@ r"""From checked parameters to what a report runs on: the bridge, the vehicle, t
 approach.  The vehicle starts at rest in static equilibrium; on a flat approach (the default
 with a file) it stays so, and the approach is just the vehicle and 10 m long.  On a rough one
 (generated, or fitted to the deck, study equation 87) its slowest free motion, decaying as
-:math:`e^{-r t}` (:func:`decay_rate`), falls to 1 % after :math:`\ln 100 / r`: the approach
-is that long at the fastest speed, and each crossing starts on it only as far before the
-bridge as its own speed needs.  The deck starts at the first support (the file's first point
-or ``profile.bridge_start``); one or two samples short, its last elevation is held.
+:math:`e^{-r t}` (:func:`~vbi_lib.reports.approach.decay_rate`), falls to 1 % after
+:math:`\ln 100 / r`: the approach is that long at the fastest speed, and each crossing
+starts on it only as far before the bridge as its own speed needs.  The deck starts at the
+first support (the file's first point or ``profile.bridge_start``); one or two samples
+short, its last elevation is held.
 
 **Directions.**  A vehicle crossing backward, from the last support, sees the bridge with its
 spans in reverse order and the deck reversed, behind an approach of its own (flat, or a
@@ -42,6 +43,7 @@ from ..ranges import RANGES
 from ..roughness import fit_iso8608
 from ..vehicles import QuarterCar, Vehicle, as_system
 from ..vehicles.fleet import hl93_tandem, hl93_truck, hs20, permit_vehicle
+from .approach import DECAY, MIN_APPROACH, approach_length
 from .deck import measured_deck
 from .parameters import ParameterError, ReportParameters
 
@@ -49,17 +51,11 @@ __all__ = [
     "Place",
     "ReportInputs",
     "Run",
-    "approach_length",
-    "decay_rate",
     "default_modes",
     "prepare",
     "sweep_speeds",
 ]
 
-#: Fraction of the start-up motion left when the vehicle reaches the bridge.
-DECAY = 0.01
-#: Shortest approach [m].
-MIN_APPROACH = 10.0
 #: The speed sweep runs from this fraction of the slowest to this multiple of the fastest speed.
 SWEEP_RANGE = (0.5, 1.2)
 #: The modal model keeps every mode up to this multiple of the highest simply supported
@@ -256,49 +252,6 @@ def sweep_speeds(speeds: tuple[float, ...], count: int) -> np.ndarray:
     low = max(SWEEP_RANGE[0] * min(speeds), 1 * u.kph)
     high = max(min(SWEEP_RANGE[1] * max(speeds), 150 * u.kph), max(speeds))
     return np.linspace(low, high, count)
-
-
-def decay_rate(vehicle: object) -> float:
-    """Rate [1/s] at which the vehicle's slowest free motion on a rigid road decays.
-
-    For the study's sprung mass the slower root of ``s^2 + 2 zeta_v omega_v s + omega_v^2``:
-    ``zeta_v omega_v`` up to critical damping, ``(zeta_v - sqrt(zeta_v^2 - 1)) omega_v``
-    above it (an overdamped suspension creeps back slowly, the more slowly the more it is
-    damped); for any other vehicle the smallest ``-Re(lambda)`` of its system (every contact
-    on, tyres included).
-
-    >>> import warnings
-    >>> with warnings.catch_warnings():  # VBI-2D's verification vehicle, damped 2.09 critical
-    ...     warnings.simplefilter("ignore")
-    ...     overdamped = Vehicle(5750.0, 1595e3, 4e5)
-    >>> round(decay_rate(overdamped), 2)  # zeta omega would say 34.78
-    4.25
-    """
-    if isinstance(vehicle, Vehicle):
-        zeta, omega = vehicle.damping_ratio, vehicle.circular_frequency
-        if zeta <= 1.0:
-            return zeta * omega
-        return (zeta - math.sqrt(zeta * zeta - 1.0)) * omega
-    system = as_system(vehicle)
-    n = system.n_dofs
-    damping = system.damping + system.contact.T @ (system.contact_damping[:, None] * system.contact)
-    inverse = system.mass_inverse
-    state = np.block(
-        [[np.zeros((n, n)), np.eye(n)], [-inverse @ system.road_stiffness, -inverse @ damping]]
-    )
-    return float(np.min(-np.linalg.eigvals(state).real))
-
-
-def approach_length(vehicle: object, speed: float) -> float:
-    """Road needed for the vehicle's start-up motion to decay to :data:`DECAY` at ``speed`` [m].
-
-    ``speed * ln(1 / DECAY) / rate`` (:func:`decay_rate`), at least :data:`MIN_APPROACH`.
-
-    >>> truck = Vehicle.from_frequency(35000.0, 2.5, 0.10)
-    >>> round(approach_length(truck, 30.0), 1)
-    88.0
-    """
-    return max(MIN_APPROACH, speed * math.log(1.0 / DECAY) / decay_rate(vehicle))
 
 
 def default_modes(bridge: Bridge) -> int:
