@@ -90,7 +90,7 @@ __all__ = [
 #: How section responses are computed from the modal coordinates.
 METHODS = ("mode-acceleration", "mode-displacement")
 #: Which face of a support a section's shear is given on: the larger (the design shear), or
-#: one side (:data:`vbi_lib.beam_statics.SIDES`).
+#: one side (:data:`vbi_lib.beam_influence.SIDES`).
 FACES = ("governing", *SIDES)
 _ORDER = {"displacement": 0, "moment": 2, "shear": 3}
 

@@ -24,7 +24,7 @@ span or two equal spans; the modal model otherwise, with every mode up to 2.3 ti
 highest simply supported frequency of any span (each span's own fundamental, below its
 clamped-clamped frequency of 2.27 times it, is then included) unless ``bridge.modes`` says.
 
-**Plausibility** of a deck profile file (unit slips) is :mod:`.deck`'s.
+**Plausibility** of a deck profile file (unit slips) is :mod:`vbi_lib.reports.deck`'s.
 """
 
 from __future__ import annotations

@@ -255,7 +255,7 @@ class ReportParameters:
         Sentences on values outside their intended range that are read all the same (a
         truck's mass), each naming the likely slip.
     effects
-        The effects reported, in the order of :data:`vbi_lib.beam_statics.EFFECTS`.
+        The effects reported, in the order of :data:`vbi_lib.beam_influence.EFFECTS`.
     direction
         ``"forward"``, ``"backward"`` or ``"both"``.
     """

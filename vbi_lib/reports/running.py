@@ -157,8 +157,8 @@ class ReportJob:
         The parameter file's ``name``, ``sha256`` and ``folder`` (relative profile paths are
         read from there).
     warnings
-        Sentences on inputs that look like a slip (:attr:`ReportInputs.warnings
-        <vbi_lib.reports.inputs.ReportInputs.warnings>`).
+        Sentences on inputs that look like a slip (the ``warnings`` of
+        :class:`~vbi_lib.reports.inputs.ReportInputs`).
     """
 
     name: str

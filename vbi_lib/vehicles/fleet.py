@@ -388,7 +388,7 @@ class RearSpacingSearch:
         The spacings tried [m], ``(n_k,)``, every 0.5 ft over the range searched.
     extreme
         ``(n_k, 3, n_s)``: the static extreme of each effect (in order
-        :data:`vbi_lib.beam_statics.EFFECTS`) that is the larger in size, over both faces of
+        :data:`vbi_lib.beam_influence.EFFECTS`) that is the larger in size, over both faces of
         a support and the directions asked, with its sign [m up, N m, N].
     governing
         ``(3, n_s)``: the spacing [m] whose extreme is the largest in size (the shortest of
