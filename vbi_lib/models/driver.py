@@ -177,8 +177,9 @@ def simulate(
     Warns
     -----
     TruncationWarning
-        ``model="modal"``: ``modes`` leaves out a span's own fundamental, or the N-mode
-        series DAF of a span differs from the mode-acceleration DAF by more than 1 %.
+        ``model="modal"``: ``modes`` leaves out a span's own fundamental.  (When the N-mode
+        series DAF of a span differs from the mode-acceleration DAF by more than 1 %,
+        ``notes`` says so; the headline is the mode-acceleration one.)
     OutsideValidityWarning
         The speed, the profile's sampling (the study's rule (32)) or the step outside their
         intended ranges; the sentence is also in ``notes``, with those on the bridge and the
@@ -199,8 +200,8 @@ def simulate(
     >>> vbi.simulate(bridge, truck, road, 720 * u.inch / u.s, 320 * u.ft).daf.round(2)
     array([1.04])
     >>> run = vbi.simulate(bridge, truck, road, 720 * u.inch, 320 * u.ft, model="modal", modes=5)
-    >>> run.daf.round(2)
-    array([1.04])
+    >>> run.daf.round(3), run.series_daf.round(3)  # mode acceleration, and the 5-mode series
+    (array([1.034]), array([1.035]))
     """
     kind = _model(model)
     system = as_system(vehicle)

@@ -353,25 +353,46 @@ def default_modes(bridge: Bridge) -> int:
     Examples
     --------
     One span: its first mode only (the second is at 4 times); a 10 m span beside a 200 m
-    one: the 10 m span's fundamental and the 31 modes of the long span below it.
+    one: the 10 m span's fundamental and the 30 modes of the long span below it.
 
     >>> from vbi_lib import Bridge
     >>> default_modes(Bridge(30.0, 1, 1e10, 5000.0)), default_modes(Bridge(25.0, 2, 1e10, 5000.0))
     (1, 2)
-    >>> default_modes(Bridge.continuous([10.0, 200.0], 1e10, 5000.0))
-    32
+    >>> default_modes(Bridge.continuous([10.0, 200.0], EI=1e10, mass_per_length=5000.0))
+    31
     """
     reach = math.sqrt(DEFAULT_MODES_REACH) * math.pi / min(bridge.spans)  # wavenumber [1/m]
     return max(1, count_below(reach, list(bridge.spans)))
 
 
+#: Stations a span is sampled at to find which spans a mode moves.
+_OWN_SAMPLES = 64
+
+
 @lru_cache(maxsize=1024)
 def missing_spans(bridge: Bridge, count: int) -> tuple[int, ...]:
-    """Spans (1-based) with none of their own modes among the first ``count``: no mode
-    whose midspan amplitude there is at least half its largest midspan amplitude."""
-    phi = np.abs(beam_modes(bridge, count).shape(np.array(bridge.midspans)))  # (n_spans, N)
-    own = phi >= 0.5 * phi.max(axis=0, keepdims=True)
-    return tuple(j + 1 for j in range(bridge.n_spans) if not own[j].any())
+    """Spans (1-based) whose own fundamental the first ``count`` modes may leave out.
+
+    A mode is a span's own when it moves that span at least half as much as the span it
+    moves most (the largest ``|phi|`` over each span, sampled along it, not only at the
+    midspans, where a long span's antisymmetric modes have a node).  A span is flagged
+    when none of the modes kept is its own, or when the highest of them is below the span's
+    simply supported frequency, about where its own fundamental begins (a short span's
+    modes coupled to a long neighbour's lie below it and do not carry its own vibration).
+    """
+    basis = beam_modes(bridge, count)
+    supports = np.array(bridge.supports)
+    u = (np.arange(_OWN_SAMPLES) + 0.5) / _OWN_SAMPLES
+    x = (supports[:-1, None] + np.diff(supports)[:, None] * u[None, :]).ravel()
+    phi = np.abs(basis.shape(x))  # (n_spans * samples, N)
+    largest = phi.reshape(bridge.n_spans, _OWN_SAMPLES, -1).max(axis=1)  # (n_spans, N)
+    own = largest >= 0.5 * largest.max(axis=0, keepdims=True)
+    lengths = np.diff(supports)
+    simply = (math.pi / lengths) ** 2 * math.sqrt(bridge.EI / bridge.mass_per_length)
+    simply /= 2 * math.pi  # each span's simply supported frequency [Hz]
+    reach = float(basis.frequencies_hz[-1])
+    return tuple(j + 1 for j in range(bridge.n_spans)
+                 if not own[j].any() or reach < (1.0 - 1e-6) * simply[j])  # fmt: skip
 
 
 def missing_note(spans: tuple[int, ...], count: int) -> str:
