@@ -140,9 +140,11 @@ STEP = {"one-coordinate": 2e-5, "modal": 1e-2}
 #: footprint the road is the same (linear between samples): the change is the step's
 #: (measured: at most 4.0e-6 and 6.9e-4).  A tyre sees the road averaged over its footprint,
 #: evaluated at the samples: resampling refines that average too (measured: at most 5.5e-5
-#: and 1.6e-3; Hypothesis found 6.9e-4 for the one-coordinate model under a quarter car
-#: heavier than its 3 m span).
-RESAMPLED = {"one-coordinate": 2e-3, "modal": 1e-2}
+#: and 1.6e-3; Hypothesis found 6.9e-4, then 3.4e-3, for the one-coordinate model under a
+#: quarter car heavier than its 3 m span on a class C road at 8 m/s: a discretisation of the
+#: footprint average, which settles at second order as the road is sampled more finely, the
+#: DAF moving 0.34, 0.44, 0.46, 0.46 % over successive halvings).
+RESAMPLED = {"one-coordinate": 5e-3, "modal": 1e-2}
 
 
 @pytest.mark.parametrize("model", list(STEP))
