@@ -139,6 +139,28 @@ def _support_moments(a: np.ndarray, lengths: np.ndarray, supports: np.ndarray, f
     return moments, k, al, bl, big
 
 
+def _simple_span(force, s, rest, al, bl, length, EI, side):  # noqa: ANN001, ANN202, N803
+    """The loaded span's own simple-span part at sections ``s`` (``rest = length - s``) under
+    ``force`` at ``al`` from its left support (``bl`` from its right): moment, shear on the
+    face ``side`` and deflection (downward positive)."""
+    before = s <= al  # the section is left of (or under) the load
+    m0 = np.where(before, force * bl * s / length, force * al * rest / length)
+    # whether the load is behind the section's face (then it is not in the shear from the
+    # left); a load on a support shears no span
+    at = s == al
+    if side == "left":
+        passed = (s > al) | (at & (al == 0.0))
+    else:
+        passed = (s > al) | (at & (al < length))
+    v0 = force * bl / length - np.where(passed, force, 0.0)
+    w0 = np.where(
+        before,
+        force * bl * s * (length**2 - bl**2 - s**2),
+        force * al * rest * (length**2 - al**2 - rest**2),
+    ) / (6.0 * length * EI)
+    return m0, v0, w0
+
+
 def continuous_statics(
     x: float | np.ndarray,
     load_position: float | np.ndarray,
@@ -227,21 +249,7 @@ def continuous_statics(
     m_left = np.take_along_axis(moments, j[None], axis=0)[0]
     m_right = np.take_along_axis(moments, (j + 1)[None], axis=0)[0]
     loaded = k == j
-    before = s <= al  # the section is left of (or under) the load
-    m0 = np.where(before, force * bl * s / length, force * al * rest / length)
-    # whether the load is behind the section's face (then it is not in the shear from the
-    # left); a load on a support shears no span
-    at = s == al
-    if side == "left":
-        passed = (s > al) | (at & (al == 0.0))
-    else:
-        passed = (s > al) | (at & (al < length))
-    v0 = force * bl / length - np.where(passed, force, 0.0)
-    w0 = np.where(
-        before,
-        force * bl * s * (length**2 - bl**2 - s**2),
-        force * al * rest * (length**2 - al**2 - rest**2),
-    ) / (6.0 * length * EI)
+    m0, v0, w0 = _simple_span(force, s, rest, al, bl, length, EI, side)
     moment = np.where(loaded, m0, 0.0) + m_left * rest / length + m_right * s / length
     shear = np.where(loaded, v0, 0.0) + (m_right - m_left) / length
     end_moments = m_left * rest * (length**2 - rest**2) + m_right * s * (length**2 - s**2)
@@ -280,19 +288,7 @@ def _influence_matrix(
     # the loaded span's own simple-span part, where the load is in the section's span
     loaded = k[:, None] == j[None, :]
     al, bl = al[:, None], bl[:, None]
-    before = s <= al
-    m0 = np.where(before, force * bl * s / length, force * al * rest / length)
-    at = s == al
-    if side == "left":
-        passed = (s > al) | (at & (al == 0.0))
-    else:
-        passed = (s > al) | (at & (al < length))
-    v0 = force * bl / length - np.where(passed, force, 0.0)
-    w0 = np.where(
-        before,
-        force * bl * s * (length**2 - bl**2 - s**2),
-        force * al * rest * (length**2 - al**2 - rest**2),
-    ) / (6.0 * length * EI)
+    m0, v0, w0 = _simple_span(force, s, rest, al, bl, length, EI, side)
     return BeamStatics(
         np.where(loaded, w0, 0.0) + ends[0],
         np.where(loaded, m0, 0.0) + ends[1],
